@@ -1,0 +1,64 @@
+#ifndef SCOUT_GEOMETRY_RIGID_TRANSFORM_H_
+#define SCOUT_GEOMETRY_RIGID_TRANSFORM_H_
+
+#include <Eigen/Core>
+#include <cmath>
+#include <ostream>
+
+namespace scout::geometry {
+
+// Returns 'angle_rad' wrapped into [-pi, pi).
+double NormalizeAngle(double angle_rad);
+
+// A rigid 2D transform (rotation by theta, then translation). As a pose it
+// maps points of the child frame into the parent frame: p_parent = T * p_child.
+class Rigid2d {
+ public:
+  Rigid2d() = default;
+  Rigid2d(double x_m, double y_m, double theta_rad)
+      : translation_(x_m, y_m), theta_(NormalizeAngle(theta_rad)) {}
+  Rigid2d(const Eigen::Vector2d& translation, double theta_rad)
+      : translation_(translation), theta_(NormalizeAngle(theta_rad)) {}
+
+  static Rigid2d Identity() { return Rigid2d(); }
+
+  const Eigen::Vector2d& translation() const { return translation_; }
+  double x() const { return translation_.x(); }
+  double y() const { return translation_.y(); }
+  // Rotation angle in [-pi, pi).
+  double theta() const { return theta_; }
+
+  // Returns the rotated-only image of 'v' (no translation).
+  Eigen::Vector2d Rotate(const Eigen::Vector2d& v) const {
+    const double c = std::cos(theta_), s = std::sin(theta_);
+    return {c * v.x() - s * v.y(), s * v.x() + c * v.y()};
+  }
+
+  // Returns T * p.
+  Eigen::Vector2d operator*(const Eigen::Vector2d& p) const { return Rotate(p) + translation_; }
+
+  // Returns the composition this * other (apply 'other' first).
+  Rigid2d operator*(const Rigid2d& other) const {
+    return Rigid2d(Rotate(other.translation_) + translation_, theta_ + other.theta_);
+  }
+
+  // Returns T^-1.
+  Rigid2d inverse() const {
+    const Rigid2d rotation_only(Eigen::Vector2d::Zero(), -theta_);
+    return Rigid2d(-rotation_only.Rotate(translation_), -theta_);
+  }
+
+ private:
+  Eigen::Vector2d translation_ = Eigen::Vector2d::Zero();
+  double theta_ = 0.0;
+};
+
+std::ostream& operator<<(std::ostream& os, const Rigid2d& t);
+
+// Returns the largest distance any point within 'radius_m' of 'center' moves
+// under 'delta' (a transform applied in the same frame as 'center').
+double MaxDisplacementWithin(const Rigid2d& delta, const Eigen::Vector2d& center, double radius_m);
+
+}  // namespace scout::geometry
+
+#endif  // SCOUT_GEOMETRY_RIGID_TRANSFORM_H_
