@@ -1,0 +1,114 @@
+#include "scout/frontier/answer_map.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "scout/frontier/local_frontiers.h"
+#include "scout/grid/distance_transform.h"
+
+namespace scout::frontier {
+namespace {
+
+using grid::CellIndex;
+
+// Cells within this many cells (Chebyshev) of a query's cell are checked one by
+// one for an exact margin; beyond, the distance transform bounds the margin.
+constexpr int kWindowRadius = 2;
+
+// Distance from 'q' to the closed axis-aligned square [lo, hi].
+double DistanceToSquare(const Eigen::Vector2d& q, const Eigen::Vector2d& lo,
+                        const Eigen::Vector2d& hi) {
+  const double dx = std::max({lo.x() - q.x(), 0.0, q.x() - hi.x()});
+  const double dy = std::max({lo.y() - q.y(), 0.0, q.y() - hi.y()});
+  return std::hypot(dx, dy);
+}
+
+}  // namespace
+
+AnswerMap::AnswerMap(const std::vector<grid::CellState>& states, const grid::MapLimits& limits)
+    : limits_(limits), cells_(states.size(), 0) {
+  const std::vector<uint8_t> frontier = FrontierCellMask(states, limits);
+  std::vector<uint8_t> objecting(states.size(), 0);
+  std::vector<uint8_t> open(states.size(), 0);
+  objecting_to_border_m_ = std::numeric_limits<double>::infinity();
+  for (int64_t flat = 0; flat < limits.num_cells(); ++flat) {
+    const bool objects = states[flat] != grid::CellState::kUnknown && !frontier[flat];
+    objecting[flat] = objects;
+    open[flat] = !objects;
+    if (objects) {
+      ++num_objecting_;
+      const CellIndex c = limits.CellOfFlatIndex(flat);
+      const int to_border =
+          std::min({c.x, c.y, limits.width() - 1 - c.x, limits.height() - 1 - c.y});
+      objecting_to_border_m_ = std::min(objecting_to_border_m_, to_border * limits.resolution());
+    }
+  }
+  // Each cell's distance to the nearest cell with the other answer.
+  const std::vector<float> to_objecting =
+      grid::SquaredDistanceToNearestSite(objecting, limits.width(), limits.height());
+  const std::vector<float> to_open =
+      grid::SquaredDistanceToNearestSite(open, limits.width(), limits.height());
+  for (int64_t flat = 0; flat < limits.num_cells(); ++flat) {
+    const float d2 = objecting[flat] ? to_open[flat] : to_objecting[flat];
+    const double quarters = std::isfinite(d2) ? std::floor(4.0 * std::sqrt(d2)) : kDistanceMask;
+    cells_[flat] = static_cast<uint8_t>(std::min<double>(quarters, kDistanceMask)) |
+                   (objecting[flat] ? kObjectsBit : 0);
+  }
+}
+
+double AnswerMap::Margin(const Eigen::Vector2d& q) const {
+  const CellIndex c = limits_.CellContaining(q);
+  const double res = limits_.resolution();
+  if (!limits_.Contains(c)) {
+    // Outside, nothing objects: the nearest objecting cell lies inside, so a
+    // path to it crosses the border and then runs at least the objecting
+    // cells' distance to the border.
+    if (num_objecting_ == 0) return std::numeric_limits<double>::infinity();
+    return limits_.Bounds().DistanceTo(q) + objecting_to_border_m_;
+  }
+  if (num_objecting_ == 0) return std::numeric_limits<double>::infinity();
+  const uint8_t cell = cells_[limits_.FlatIndex(c)];
+  const bool objects = cell & kObjectsBit;
+  const double centre_distance = (cell & kDistanceMask) * 0.25 * res;
+  double margin;
+  // A cell with the other answer inside the window lies within 2*sqrt(2) cells
+  // (centre to centre); when the transform says farther, the window holds none.
+  if (centre_distance > (kWindowRadius * std::sqrt(2.0) + 0.01) * res) {
+    // Any other-answer square is at least (centre distance - |q - centre| -
+    // half a diagonal) away.
+    margin = centre_distance - (q - limits_.CellCenter(c)).norm() - res * std::sqrt(0.5);
+  } else {
+    margin = WindowMargin(q, c, objects);
+  }
+  if (objects) {
+    // Outside the grid nobody objects: the border is another answer.
+    const geometry::Box2d bounds = limits_.Bounds();
+    margin = std::min({margin, q.x() - bounds.min.x(), bounds.max.x() - q.x(),
+                       q.y() - bounds.min.y(), bounds.max.y() - q.y()});
+  }
+  return std::max(0.0, margin);
+}
+
+double AnswerMap::WindowMargin(const Eigen::Vector2d& q, const CellIndex& c, bool objects) const {
+  const double res = limits_.resolution();
+  // Beyond the window, any cell is at least the distance from q to the window's edge.
+  const Eigen::Vector2d window_lo =
+      limits_.CellCenter({c.x - kWindowRadius, c.y - kWindowRadius}).array() - 0.5 * res;
+  const Eigen::Vector2d window_hi =
+      limits_.CellCenter({c.x + kWindowRadius, c.y + kWindowRadius}).array() + 0.5 * res;
+  double margin = std::min(
+      {q.x() - window_lo.x(), window_hi.x() - q.x(), q.y() - window_lo.y(), window_hi.y() - q.y()});
+  for (int dy = -kWindowRadius; dy <= kWindowRadius; ++dy) {
+    for (int dx = -kWindowRadius; dx <= kWindowRadius; ++dx) {
+      const CellIndex n{c.x + dx, c.y + dy};
+      if (ObjectsAtCell(n) == objects) continue;
+      const Eigen::Vector2d centre = limits_.CellCenter(n);
+      margin = std::min(
+          margin, DistanceToSquare(q, centre.array() - 0.5 * res, centre.array() + 0.5 * res));
+    }
+  }
+  return margin;
+}
+
+}  // namespace scout::frontier

@@ -1,0 +1,77 @@
+#include "scout/frontier/answer_map.h"
+
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include <random>
+
+#include "scout/frontier/test_grids.h"
+
+namespace scout::frontier {
+namespace {
+
+using testing::DrawGrid;
+
+TEST(AnswerMap, KnownNonFrontierCellsObject) {
+  const auto g = DrawGrid({"?????",  //
+                           "?...?",  //
+                           "?...?",  //
+                           "?...?",  //
+                           "?##??"},
+                          0.1);
+  const AnswerMap a(g->States(), g->limits());
+  EXPECT_TRUE(a.ObjectsAtCell({2, 2}));   // free, every neighbour known
+  EXPECT_TRUE(a.ObjectsAtCell({1, 0}));   // occupied
+  EXPECT_FALSE(a.ObjectsAtCell({1, 1}));  // free frontier cell (touches unknown (0, 1))
+  EXPECT_FALSE(a.ObjectsAtCell({4, 4}));  // unknown
+  EXPECT_FALSE(a.Objects({-1.0, 0.0}));   // outside the grid
+  EXPECT_TRUE(a.Objects({0.25, 0.25}));
+}
+
+// Random grids: every position within Margin(q) of q gets q's answer.
+RC_GTEST_PROP(AnswerMap, MarginIsConservative, ()) {
+  const uint64_t seed = *rc::gen::arbitrary<uint64_t>();
+  std::mt19937_64 rng(seed);
+  const int w = 6 + static_cast<int>(rng() % 20), h = 6 + static_cast<int>(rng() % 20);
+  std::vector<std::string> rows(h, std::string(w, '?'));
+  for (auto& row : rows) {
+    for (char& ch : row) {
+      const int r = static_cast<int>(rng() % 10);
+      ch = r < 5 ? '.' : (r < 7 ? '#' : '?');
+    }
+  }
+  const double res = 0.05;
+  const auto g = DrawGrid(rows, res, {-0.3, 0.7});
+  const AnswerMap a(g->States(), g->limits());
+  const auto uniform = [&](double lo, double hi) {
+    return lo + (hi - lo) * static_cast<double>(rng() >> 11) / static_cast<double>(1ull << 53);
+  };
+  for (int trial = 0; trial < 200; ++trial) {
+    const Eigen::Vector2d q(uniform(-0.6, -0.3 + w * res + 0.3), uniform(0.4, 0.7 + h * res + 0.3));
+    const double m = a.Margin(q);
+    RC_ASSERT(m >= 0.0);
+    const double step = std::min(m, 2.0) * uniform(0.0, 0.999);
+    const double angle = uniform(0.0, 6.283);
+    const Eigen::Vector2d q2 = q + step * Eigen::Vector2d(std::cos(angle), std::sin(angle));
+    RC_ASSERT(a.Objects(q2) == a.Objects(q));
+  }
+}
+
+TEST(AnswerMap, MarginIsTightNearABoundary) {
+  // One objecting column next to unknown: a point 0.01 m from the boundary has a
+  // margin of about 0.01 m, not 0.
+  const auto g = DrawGrid({"##??", "##??", "##??", "##??"}, 0.1);
+  const AnswerMap a(g->States(), g->limits());
+  EXPECT_NEAR(a.Margin({0.19, 0.2}), 0.01, 1e-9);
+  EXPECT_NEAR(a.Margin({0.25, 0.2}), 0.05, 1e-9);
+}
+
+TEST(AnswerMap, EmptyMapNeverObjects) {
+  const auto g = DrawGrid({"????", "????"}, 0.1);
+  const AnswerMap a(g->States(), g->limits());
+  EXPECT_EQ(a.num_objecting_cells(), 0);
+  EXPECT_TRUE(std::isinf(a.Margin({0.1, 0.1})));
+}
+
+}  // namespace
+}  // namespace scout::frontier

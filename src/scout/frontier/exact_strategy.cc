@@ -1,0 +1,285 @@
+#include "scout/frontier/exact_strategy.h"
+
+#include <algorithm>
+#include <numeric>
+
+#include "scout/frontier/stopwatch.h"
+
+namespace scout::frontier {
+namespace {
+
+// Absorbs the float rounding of stored positions and margins (values of a few
+// metres keep ~1e-6 m in float); real margins are multiples of millimetres.
+constexpr double kSafety_m = 1e-5;
+
+bool ByKey(const auto& a, const auto& b) { return a.key_m < b.key_m; }
+
+Eigen::Vector2d RefOf(const auto& e) { return {e.ref_x_m, e.ref_y_m}; }
+
+}  // namespace
+
+geometry::Rigid2d ExactStrategy::Relative(int i, int j) const {
+  return catalog_.submap(j).global_pose_inverse * catalog_.submap(i).global_pose;
+}
+
+void ExactStrategy::SetObjects(int i, uint32_t k, bool before, bool after) {
+  if (before == after) return;
+  objectors_[i][k] += after ? 1 : -1;
+  is_frontier_[i][k] = objectors_[i][k] == 0;
+}
+
+void ExactStrategy::Mark(int i, uint32_t k) {
+  if (point_stamp_[i][k] == stamp_) return;
+  point_stamp_[i][k] = stamp_;
+  ++pending_.queried_points;
+  if (submap_stamp_[i] != stamp_) {
+    submap_stamp_[i] = stamp_;
+    ++pending_.queried_submaps;
+    pending_.submap_ids.push_back(i);
+  }
+}
+
+void ExactStrategy::BeginUpdate() {
+  ++stamp_;
+  pending_ = UpdateCost{};
+}
+
+UpdateCost ExactStrategy::EndUpdate(double time_us) {
+  pending_.time_us = time_us;
+  return pending_;
+}
+
+ExactStrategy::Watch* ExactStrategy::FindWatch(int i, int j) {
+  for (Watch& w : watches_[i]) {
+    if (w.j == j) return &w;
+  }
+  return nullptr;
+}
+
+void ExactStrategy::Anchor(int i, Watch* w) {
+  const std::vector<Eigen::Vector2d>& points = catalog_.submap(i).frontier.points_m;
+  const AnswerMap& answers = catalog_.submap(w->j).answers;
+  const double slack = catalog_.options().exact_slack_m;
+  for (const Entry& e : w->entries) SetObjects(i, e.point, e.objects, false);
+  w->entries.clear();
+  const geometry::Rigid2d rel = Relative(i, w->j);
+  w->coverage_anchor = w->sort_anchor = rel;
+  Eigen::Vector2d sum = Eigen::Vector2d::Zero();
+  for (const Eigen::Vector2d& p : points) sum += rel * p;
+  w->center = points.empty() ? sum : Eigen::Vector2d(sum / static_cast<double>(points.size()));
+  w->sort_center = w->center;
+  w->radius_m = 0.0;
+  for (const Eigen::Vector2d& p : points) {
+    w->radius_m = std::max(w->radius_m, (rel * p - w->center).norm());
+  }
+  w->radius_m += kSafety_m;
+  for (uint32_t k = 0; k < points.size(); ++k) AddEntry(i, k, w, answers, slack);
+  std::sort(w->entries.begin(), w->entries.end(), ByKey<Entry, Entry>);
+}
+
+void ExactStrategy::AddEntry(int i, uint32_t k, Watch* w, const AnswerMap& answers,
+                             double slack_m) {
+  const Eigen::Vector2d& p = catalog_.submap(i).frontier.points_m[k];
+  const Eigen::Vector2d q = catalog_.PointInSubmap(i, p, w->j);
+  Mark(i, k);
+  const bool objects = answers.Objects(q);
+  const double margin = answers.Margin(q) - kSafety_m;
+  // Not stored: it keeps its answer while no point moves by 'slack' from the
+  // coverage anchor (checked per pair).
+  if (!objects && margin >= slack_m + (q - w->coverage_anchor * p).norm()) return;
+  Entry e;
+  e.ref_x_m = static_cast<float>(q.x());
+  e.ref_y_m = static_cast<float>(q.y());
+  e.ref_margin_m = static_cast<float>(margin);
+  e.key_m = static_cast<float>(margin - (RefOf(e) - w->sort_anchor * p).norm());
+  e.point = k;
+  e.objects = objects;
+  w->entries.push_back(e);
+  SetObjects(i, k, false, objects);
+}
+
+void ExactStrategy::Rekey(int i, Watch* w) {
+  const std::vector<Eigen::Vector2d>& points = catalog_.submap(i).frontier.points_m;
+  const geometry::Rigid2d rel = Relative(i, w->j);
+  w->sort_center = rel * (w->coverage_anchor.inverse() * w->center);
+  w->sort_anchor = rel;
+  for (Entry& e : w->entries) {
+    e.key_m = static_cast<float>(e.ref_margin_m - (RefOf(e) - rel * points[e.point]).norm());
+  }
+  std::sort(w->entries.begin(), w->entries.end(), ByKey<Entry, Entry>);
+}
+
+void ExactStrategy::Refresh(int i, Watch* w) {
+  const geometry::Rigid2d rel = Relative(i, w->j);
+  const double slack = catalog_.options().exact_slack_m;
+  if (geometry::MaxDisplacementWithin(rel * w->coverage_anchor.inverse(), w->center, w->radius_m) >=
+      slack) {
+    Anchor(i, w);
+    return;
+  }
+  const double bound =
+      geometry::MaxDisplacementWithin(rel * w->sort_anchor.inverse(), w->sort_center, w->radius_m);
+  const auto end = std::upper_bound(w->entries.begin(), w->entries.end(), bound,
+                                    [](double b, const Entry& e) { return b < e.key_m; });
+  if (end == w->entries.begin()) return;
+  const std::vector<Eigen::Vector2d>& points = catalog_.submap(i).frontier.points_m;
+  const AnswerMap& answers = catalog_.submap(w->j).answers;
+  for (auto it = w->entries.begin(); it != end; ++it) {
+    const Eigen::Vector2d& p = points[it->point];
+    const Eigen::Vector2d q = catalog_.PointInSubmap(i, p, w->j);
+    if ((q - RefOf(*it)).norm() < it->ref_margin_m) continue;
+    Mark(i, it->point);
+    const bool objects = answers.Objects(q);
+    SetObjects(i, it->point, it->objects, objects);
+    const double margin = answers.Margin(q) - kSafety_m;
+    it->objects = objects;
+    it->ref_x_m = static_cast<float>(q.x());
+    it->ref_y_m = static_cast<float>(q.y());
+    it->ref_margin_m = static_cast<float>(margin);
+    it->key_m = static_cast<float>(margin - (RefOf(*it) - w->sort_anchor * p).norm());
+  }
+  const size_t checked = static_cast<size_t>(end - w->entries.begin());
+  // When most entries need a check each round, move the keys to the current pose.
+  if (2 * checked > w->entries.size()) {
+    Rekey(i, w);
+  } else {
+    std::sort(w->entries.begin(), end, ByKey<Entry, Entry>);
+    std::inplace_merge(w->entries.begin(), end, w->entries.end(), ByKey<Entry, Entry>);
+  }
+}
+
+void ExactStrategy::ReviewNearChange(int i, Watch* w, const geometry::Box2d& region) {
+  const std::vector<Eigen::Vector2d>& points = catalog_.submap(i).frontier.points_m;
+  const AnswerMap& answers = catalog_.submap(w->j).answers;
+  const double slack = catalog_.options().exact_slack_m;
+  std::vector<uint8_t> has_entry(points.size(), 0);
+  for (Entry& e : w->entries) {
+    has_entry[e.point] = 1;
+    if (region.DistanceTo(RefOf(e)) >= e.ref_margin_m) continue;
+    const Eigen::Vector2d& p = points[e.point];
+    const Eigen::Vector2d q = catalog_.PointInSubmap(i, p, w->j);
+    Mark(i, e.point);
+    const bool objects = answers.Objects(q);
+    SetObjects(i, e.point, e.objects, objects);
+    const double margin = answers.Margin(q) - kSafety_m;
+    e.objects = objects;
+    e.ref_x_m = static_cast<float>(q.x());
+    e.ref_y_m = static_cast<float>(q.y());
+    e.ref_margin_m = static_cast<float>(margin);
+    e.key_m = static_cast<float>(margin - (RefOf(e) - w->sort_anchor * p).norm());
+  }
+  // Unstored points were safe for 'slack' around their coverage position under
+  // the old answers; near the change that no longer holds.
+  for (uint32_t k = 0; k < points.size(); ++k) {
+    if (has_entry[k]) continue;
+    if (region.DistanceTo(w->coverage_anchor * points[k]) >= slack + kSafety_m) continue;
+    AddEntry(i, k, w, answers, slack);
+  }
+  std::sort(w->entries.begin(), w->entries.end(), ByKey<Entry, Entry>);
+}
+
+void ExactStrategy::UpdateWatchesOf(int i) {
+  std::vector<Watch>& watches = watches_[i];
+  const geometry::Box2d points_box = catalog_.GlobalPointsBox(i);
+  // A pair whose boxes no longer meet has no point of i inside j's grid.
+  std::erase_if(watches, [&](Watch& w) {
+    if (catalog_.submap(w.j).global_box.Intersects(points_box)) return false;
+    for (const Entry& e : w.entries) SetObjects(i, e.point, e.objects, false);
+    return true;
+  });
+  for (Watch& w : watches) Refresh(i, &w);
+  if (catalog_.submap(i).frontier.points_m.empty()) return;
+  for (const int j : catalog_.index().Intersecting(points_box)) {
+    if (j == i || FindWatch(i, j) != nullptr) continue;
+    watches.push_back(Watch{});
+    watches.back().j = j;
+    Anchor(i, &watches.back());
+  }
+}
+
+void ExactStrategy::EnsureSize(int n) {
+  while (static_cast<int>(watches_.size()) < n) {
+    watches_.emplace_back();
+    objectors_.emplace_back();
+    point_stamp_.emplace_back();
+    submap_stamp_.push_back(0);
+  }
+}
+
+int64_t ExactStrategy::num_entries() const {
+  int64_t n = 0;
+  for (const std::vector<Watch>& watches : watches_) {
+    for (const Watch& w : watches) n += static_cast<int64_t>(w.entries.size());
+  }
+  return n;
+}
+
+UpdateCost ExactStrategy::OnOptimized(const std::vector<geometry::Rigid2d>&) {
+  const Stopwatch stopwatch;
+  BeginUpdate();
+  EnsureSize(catalog_.size());
+  for (int i = 0; i < catalog_.size(); ++i) UpdateWatchesOf(i);
+  return EndUpdate(stopwatch.ElapsedUs());
+}
+
+UpdateCost ExactStrategy::OnSubmapChanged(const SubmapChange& change) {
+  const Stopwatch stopwatch;
+  BeginUpdate();
+  const int j = change.id;
+  EnsureSize(catalog_.size());
+  RemapPoints(change);  // sizes is_frontier_ / hint_; answers are rebuilt below
+  const size_t n = change.previous_index.size();
+  point_stamp_[j].assign(n, 0);
+  // The changed submap's own points: keep the entries of surviving points
+  // (the other submaps did not change), drop vanished ones, add new ones.
+  objectors_[j].assign(n, 0);
+  std::vector<int> new_index_of_old;
+  for (size_t k = 0; k < n; ++k) {
+    const int old = change.previous_index[k];
+    if (old < 0) continue;
+    if (static_cast<int>(new_index_of_old.size()) <= old) new_index_of_old.resize(old + 1, -1);
+    new_index_of_old[old] = static_cast<int>(k);
+  }
+  const std::vector<Eigen::Vector2d>& points = catalog_.submap(j).frontier.points_m;
+  const double slack = catalog_.options().exact_slack_m;
+  for (Watch& w : watches_[j]) {
+    std::vector<Entry> kept;
+    for (Entry e : w.entries) {
+      const int k = e.point < new_index_of_old.size() ? new_index_of_old[e.point] : -1;
+      if (k < 0) continue;
+      e.point = static_cast<uint32_t>(k);
+      kept.push_back(e);
+      if (e.objects) ++objectors_[j][k];
+    }
+    w.entries = std::move(kept);
+    const AnswerMap& answers = catalog_.submap(w.j).answers;
+    for (size_t k = 0; k < n; ++k) {
+      if (change.previous_index[k] >= 0) continue;
+      // New points join the coverage disc and get looked up now.
+      w.radius_m =
+          std::max(w.radius_m, (w.coverage_anchor * points[k] - w.center).norm() + kSafety_m);
+      AddEntry(j, static_cast<uint32_t>(k), &w, answers, slack);
+    }
+    std::sort(w.entries.begin(), w.entries.end(), ByKey<Entry, Entry>);
+  }
+  for (size_t k = 0; k < n; ++k) is_frontier_[j][k] = objectors_[j][k] == 0;
+  UpdateWatchesOf(j);
+  // Other submaps' watches on j: j's answers changed inside the changed region.
+  if (!change.changed_region.empty()) {
+    for (int i = 0; i < catalog_.size(); ++i) {
+      if (i == j) continue;
+      Watch* w = FindWatch(i, j);
+      if (w != nullptr) {
+        ReviewNearChange(i, w, change.changed_region);
+      } else if (!catalog_.submap(i).frontier.points_m.empty() &&
+                 catalog_.GlobalPointsBox(i).Intersects(catalog_.submap(j).global_box)) {
+        watches_[i].push_back(Watch{});
+        watches_[i].back().j = j;
+        Anchor(i, &watches_[i].back());
+      }
+    }
+  }
+  return EndUpdate(stopwatch.ElapsedUs());
+}
+
+}  // namespace scout::frontier

@@ -1,0 +1,95 @@
+#ifndef SCOUT_FRONTIER_EXACT_STRATEGY_H_
+#define SCOUT_FRONTIER_EXACT_STRATEGY_H_
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <vector>
+
+#include "scout/frontier/update_strategy.h"
+
+namespace scout::frontier {
+
+// "exact" (Scout's own): after an optimisation, re-queries only the points
+// whose answer can have changed, so its answers always equal "full".
+//
+// Why it is exact. A point p of submap i is a global frontier iff no other
+// submap j objects at q_j = T_j^-1 T_i p (outside j's grid nobody objects, so
+// the R-tree only filters). Each j's answer at q_j depends only on the relative
+// pose T_j^-1 T_i. For every ordered pair (i, j) whose boxes meet, a *watch*
+// remembers, per point, the position q_ref where j's answer was last looked up,
+// that answer, and j's margin there (AnswerMap::Margin: every position closer
+// than it has the same answer). While |q_j - q_ref| < margin the answer cannot
+// have changed. Points far from every other-answer cell (margin >= slack S)
+// are not stored; they are covered as long as no point of i moved by S in j's
+// frame since the watch was anchored, which one bound per pair proves
+// (geometry::MaxDisplacementWithin). Entries are sorted by a key that lower-
+// bounds their margin relative to the pair's current motion bound, so one
+// binary search finds the few entries that need an exact check. A pair whose
+// boxes do not meet has no point of i inside j's grid, so nothing objects.
+//
+// Grid changes re-anchor the watches of the changed submap (its answers and its
+// points changed); their lookups are counted in the grid-change cost.
+class ExactStrategy : public UpdateStrategy {
+ public:
+  using UpdateStrategy::UpdateStrategy;
+  std::string_view name() const override { return "exact"; }
+  UpdateCost OnSubmapChanged(const SubmapChange& change) override;
+  UpdateCost OnOptimized(const std::vector<geometry::Rigid2d>& previous_poses) override;
+
+  // Number of stored per-point margins over all watches (memory diagnostics).
+  int64_t num_entries() const;
+
+ private:
+  struct Entry {
+    float key_m;         // lower bound of the margin relative to the sort anchor
+    float ref_margin_m;  // margin of j at q_ref
+    float ref_x_m;       // q_ref, in j's frame
+    float ref_y_m;
+    uint32_t point;  // index of the point in submap i
+    bool objects;    // j's answer at q_ref
+  };
+  struct Watch {
+    int j = -1;
+    geometry::Rigid2d coverage_anchor;  // relative pose when all points were looked up
+    geometry::Rigid2d sort_anchor;      // relative pose the entry keys refer to
+    Eigen::Vector2d center = Eigen::Vector2d::Zero();       // disc holding coverage_anchor * p
+    Eigen::Vector2d sort_center = Eigen::Vector2d::Zero();  // the same disc under sort_anchor
+    double radius_m = 0.0;
+    std::vector<Entry> entries;  // ascending key_m
+  };
+
+  geometry::Rigid2d Relative(int i, int j) const;
+  // Looks up every point of i in j at the current poses.
+  void Anchor(int i, Watch* watch);
+  // Brings one watch up to date with the current poses.
+  void Refresh(int i, Watch* watch);
+  // Looks up point k of i in the watch's submap and stores an entry unless the
+  // slack covers it.
+  void AddEntry(int i, uint32_t k, Watch* watch, const AnswerMap& answers, double slack_m);
+  // After the watch's submap changed its answers inside 'region' (its frame):
+  // re-checks every point whose recorded margin reaches into the region.
+  void ReviewNearChange(int i, Watch* watch, const geometry::Box2d& region);
+  void EnsureSize(int num_submaps);
+  // Recomputes the sort keys for the current relative pose (no lookups).
+  void Rekey(int i, Watch* watch);
+  Watch* FindWatch(int i, int j);
+  // Creates watches for every submap whose box meets i's points and refreshes
+  // the existing ones.
+  void UpdateWatchesOf(int i);
+  void SetObjects(int i, uint32_t k, bool before, bool after);
+  void Mark(int i, uint32_t k);
+  void BeginUpdate();
+  UpdateCost EndUpdate(double time_us);
+
+  std::vector<std::vector<Watch>> watches_;       // by submap i
+  std::vector<std::vector<uint16_t>> objectors_;  // per point: watches that object
+  // Distinct points / submaps touched in the current update.
+  std::vector<std::vector<uint32_t>> point_stamp_;
+  std::vector<uint32_t> submap_stamp_;
+  uint32_t stamp_ = 0;
+  UpdateCost pending_;
+};
+
+}  // namespace scout::frontier
+
+#endif  // SCOUT_FRONTIER_EXACT_STRATEGY_H_

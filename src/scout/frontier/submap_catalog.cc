@@ -1,0 +1,155 @@
+#include "scout/frontier/submap_catalog.h"
+
+#include <string>
+#include <unordered_map>
+
+#include "scout/common/error.h"
+
+namespace scout::frontier {
+namespace {
+
+// Box grown by this much so that a point inside a grid is inside its global
+// box despite rounding.
+constexpr double kBoxPadding_m = 1e-6;
+
+// Returns the box (submap frame) of the cells whose answer differs between
+// 'before' and 'after'; cells outside a grid do not object.
+geometry::Box2d ChangedRegion(const AnswerMap& before, const AnswerMap& after) {
+  geometry::Box2d region;
+  const grid::MapLimits& limits = after.limits();
+  const double half = 0.5 * limits.resolution();
+  for (int y = 0; y < limits.height(); ++y) {
+    for (int x = 0; x < limits.width(); ++x) {
+      const grid::CellIndex c{x, y};
+      const Eigen::Vector2d centre = limits.CellCenter(c);
+      if (after.ObjectsAtCell(c) != before.Objects(centre)) {
+        region.Extend(centre.array() - half);
+        region.Extend(centre.array() + half);
+      }
+    }
+  }
+  // Cells of the old grid that fall outside the new one (grids only grow, but
+  // a producer may shrink them) lose their objection.
+  const grid::MapLimits& old_limits = before.limits();
+  for (int y = 0; y < old_limits.height(); ++y) {
+    for (int x = 0; x < old_limits.width(); ++x) {
+      const Eigen::Vector2d centre = old_limits.CellCenter({x, y});
+      if (!limits.Contains(limits.CellContaining(centre)) && before.ObjectsAtCell({x, y})) {
+        region.Extend(centre.array() - half);
+        region.Extend(centre.array() + half);
+      }
+    }
+  }
+  return region;
+}
+
+}  // namespace
+
+SubmapCatalog::SubmapCatalog(const FrontierOptions& options) : options_(options) {
+  Validate(options_);
+}
+
+SubmapChange SubmapCatalog::Apply(const events::SubmapChanged& event) {
+  if (event.id < 0 || event.id > size()) {
+    throw InputError("SubmapChanged: submap id " + std::to_string(event.id) +
+                     " is neither an existing submap nor the next one (" + std::to_string(size()) +
+                     ")");
+  }
+  if (!event.grid) {
+    throw InputError("SubmapChanged: submap " + std::to_string(event.id) + " carries no grid");
+  }
+  SubmapChange change;
+  change.id = event.id;
+  change.is_new = event.id == size();
+  if (change.is_new) {
+    submaps_.emplace_back();
+    submaps_.back().local_pose = event.local_pose;
+    SetGlobalPose(event.id, local_to_global_ * event.local_pose);
+  }
+  SubmapRecord& record = submaps_[event.id];
+  const std::vector<grid::CellState> states = event.grid->States();
+  const grid::MapLimits& limits = event.grid->limits();
+  AnswerMap answers(states, limits);
+  change.changed_region = ChangedRegion(record.answers, answers);
+  change.previous_answers = std::move(record.answers);
+  record.answers = std::move(answers);
+  record.grid = event.grid;
+  record.local_pose = event.local_pose;
+  record.scan_origins = event.scan_origins;
+  record.finished = event.finished;
+
+  LocalFrontier frontier =
+      ExtractReachableFrontier(states, limits, event.scan_origins, options_.inflation_radius_m);
+  // Points are cell centres: match old and new by metric position, which
+  // survives a grown grid (same resolution, same lattice).
+  std::unordered_map<int64_t, int> old_index;
+  old_index.reserve(record.frontier.cells.size());
+  const double res = limits.resolution();
+  const auto key = [&](const Eigen::Vector2d& p) {
+    const int64_t kx = static_cast<int64_t>(std::floor(p.x() / res));
+    const int64_t ky = static_cast<int64_t>(std::floor(p.y() / res));
+    return (kx << 32) ^ (ky & 0xffffffff);
+  };
+  for (size_t k = 0; k < record.frontier.points_m.size(); ++k) {
+    old_index.emplace(key(record.frontier.points_m[k]), static_cast<int>(k));
+  }
+  change.previous_index.resize(frontier.points_m.size());
+  for (size_t k = 0; k < frontier.points_m.size(); ++k) {
+    const auto it = old_index.find(key(frontier.points_m[k]));
+    change.previous_index[k] = it == old_index.end() ? -1 : it->second;
+  }
+  record.frontier = std::move(frontier);
+  record.local_points_box = geometry::Box2d();
+  for (const Eigen::Vector2d& p : record.frontier.points_m) record.local_points_box.Extend(p);
+  SetGlobalPose(event.id, record.global_pose);  // refreshes the box of a grown grid
+  return change;
+}
+
+std::vector<geometry::Rigid2d> SubmapCatalog::Apply(const events::Optimized& event) {
+  if (static_cast<int>(event.global_poses.size()) > size()) {
+    throw InputError("Optimized: carries " + std::to_string(event.global_poses.size()) +
+                     " submap poses but only " + std::to_string(size()) + " submaps exist");
+  }
+  std::vector<geometry::Rigid2d> previous = GlobalPoses();
+  const int covered = static_cast<int>(event.global_poses.size());
+  for (int id = 0; id < covered; ++id) SetGlobalPose(id, event.global_poses[id]);
+  if (covered > 0) {
+    // Cartographer's rule: new local SLAM output follows the correction of the
+    // newest optimised submap.
+    local_to_global_ = event.global_poses[covered - 1] * submaps_[covered - 1].local_pose.inverse();
+  }
+  for (int id = covered; id < size(); ++id) {
+    SetGlobalPose(id, local_to_global_ * submaps_[id].local_pose);
+  }
+  return previous;
+}
+
+std::vector<geometry::Rigid2d> SubmapCatalog::GlobalPoses() const {
+  std::vector<geometry::Rigid2d> poses;
+  poses.reserve(submaps_.size());
+  for (const SubmapRecord& r : submaps_) poses.push_back(r.global_pose);
+  return poses;
+}
+
+geometry::Box2d SubmapCatalog::GlobalPointsBox(int i) const {
+  const SubmapRecord& r = submaps_[i];
+  return geometry::TransformBox(r.global_pose, r.local_points_box).Inflated(kBoxPadding_m);
+}
+
+int64_t SubmapCatalog::total_points() const {
+  int64_t n = 0;
+  for (const SubmapRecord& r : submaps_) n += static_cast<int64_t>(r.frontier.points_m.size());
+  return n;
+}
+
+void SubmapCatalog::SetGlobalPose(int id, const geometry::Rigid2d& pose) {
+  SubmapRecord& r = submaps_[id];
+  r.global_pose = pose;
+  r.global_pose_inverse = pose.inverse();
+  r.global_box =
+      r.grid ? geometry::TransformBox(pose, r.grid->limits().Bounds()).Inflated(kBoxPadding_m)
+             : geometry::Box2d();
+  index_.Set(id, r.global_box);
+}
+
+}  // namespace scout::frontier
