@@ -1,0 +1,134 @@
+// End-to-end tests of the scout command line: exit codes, error messages and
+// outputs, on a small hand-made building map.
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <random>
+#include <sstream>
+
+#include "scout/common/atomic_file.h"
+#include "scout/grid/map_io.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Result {
+  int exit_code = -1;
+  std::string output;  // stdout and stderr
+};
+
+Result Run(const std::string& args) {
+  const std::string command = std::string(SCOUT_BINARY) + " " + args + " 2>&1";
+  Result r;
+  FILE* pipe = popen(command.c_str(), "r");
+  char buffer[4096];
+  while (pipe != nullptr && fgets(buffer, sizeof(buffer), pipe) != nullptr) r.output += buffer;
+  const int status = pipe != nullptr ? pclose(pipe) : -1;
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+class ScoutCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    std::random_device rd;
+    dir_ = fs::temp_directory_path() / ("scout_cli_test_" + std::to_string(rd()));
+    fs::create_directories(dir_);
+    // A 10 m x 8 m two-room building: outer walls, a dividing wall with a door.
+    scout::grid::OccupancyMap map;
+    map.limits = scout::grid::MapLimits(0.05, {0, 0}, 200, 160);
+    map.cells.assign(map.limits.num_cells(), scout::grid::CellState::kFree);
+    for (int y = 0; y < 160; ++y) {
+      for (int x = 0; x < 200; ++x) {
+        const bool outer = x < 3 || y < 3 || x >= 197 || y >= 157;
+        const bool divider = x >= 99 && x < 102 && !(y >= 60 && y < 90);
+        if (outer || divider) map.set({x, y}, scout::grid::CellState::kOccupied);
+      }
+    }
+    scout::grid::WriteMapServerMap(map, dir_ / "rooms.yaml");
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  fs::path dir_;
+};
+
+TEST_F(ScoutCli, HelpAndVersionSucceed) {
+  EXPECT_EQ(Run("--help").exit_code, 0);
+  EXPECT_EQ(Run("frontier-bench --help").exit_code, 0);
+}
+
+TEST_F(ScoutCli, BadCommandLineExitsWithTwo) {
+  EXPECT_EQ(Run("").exit_code, 2);
+  EXPECT_EQ(Run("no-such-command").exit_code, 2);
+  EXPECT_EQ(Run("frontier-bench --seed notanumber").exit_code, 2);
+}
+
+TEST_F(ScoutCli, BadInputsNameWhatIsWrongAndLeaveNoOutputs) {
+  const fs::path out = dir_ / "out";
+  const std::string o = " --out " + out.string();
+  Result r = Run("frontier-bench --world atlantis" + o);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("unknown world 'atlantis'"), std::string::npos) << r.output;
+  r = Run("frontier-bench --world " + (dir_ / "missing.yaml").string() + o);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("missing.yaml"), std::string::npos) << r.output;
+  r = Run("frontier-bench --strategies dfd,magic --world office" + o);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("'magic'"), std::string::npos) << r.output;
+  r = Run("frontier-bench --epsilon -1 --world office" + o);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("epsilon_m"), std::string::npos) << r.output;
+  scout::WriteTextFileAtomically(dir_ / "bad.yaml", "frontier:\n  inflation_radius: 0.3\n");
+  r = Run("frontier-bench --config " + (dir_ / "bad.yaml").string() + o);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("frontier.inflation_radius"), std::string::npos) << r.output;
+  scout::WriteTextFileAtomically(dir_ / "file", "x");
+  r = Run("frontier-bench --world " + (dir_ / "rooms.yaml").string() + " --out " +
+          (dir_ / "file" / "sub").string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("file/sub"), std::string::npos) << r.output;
+  EXPECT_TRUE(!fs::exists(out) || fs::is_empty(out));
+}
+
+TEST_F(ScoutCli, FrontierBenchWritesConsistentOutputs) {
+  const fs::path out = dir_ / "out";
+  const Result r = Run("frontier-bench --quiet --world " + (dir_ / "rooms.yaml").string() +
+                       " --seed 3 --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::vector<std::string> names;
+  for (const auto& e : fs::directory_iterator(out)) names.push_back(e.path().filename());
+  std::sort(names.begin(), names.end());
+  EXPECT_EQ(names, (std::vector<std::string>{"frontier.csv", "frontiers.png", "summary.json"}));
+  std::ifstream in(out / "summary.json");
+  const nlohmann::json summary = nlohmann::json::parse(in);
+  EXPECT_GT(summary["submaps"].get<int>(), 1);
+  EXPECT_GT(summary["optimizations"].get<int>(), 0);
+  const nlohmann::json& s = summary["frontier"]["strategies"];
+  for (const std::string name : {"full", "dfd", "bfs", "direct", "exact"}) {
+    ASSERT_TRUE(s.contains(name)) << name;
+    for (const std::string key :
+         {"queried_points", "queried_submaps", "time_ms", "accuracy", "precision", "recall", "P"}) {
+      EXPECT_TRUE(s[name].contains(key)) << name << "." << key;
+    }
+  }
+  EXPECT_DOUBLE_EQ(s["exact"]["accuracy"].get<double>(), 1.0);
+  EXPECT_DOUBLE_EQ(s["dfd"]["accuracy"].get<double>(), 1.0);
+  EXPECT_DOUBLE_EQ(s["dfd"]["P"].get<double>(), 0.0);
+  EXPECT_LE(s["direct"]["queried_points"].get<int64_t>(),
+            s["dfd"]["queried_points"].get<int64_t>());
+  std::ifstream csv(out / "frontier.csv");
+  std::string header;
+  std::getline(csv, header);
+  EXPECT_EQ(header, "round,strategy,queried_points,queried_submaps,time_us,tp,fp,tn,fn");
+  int rows = 0;
+  for (std::string line; std::getline(csv, line);) ++rows;
+  EXPECT_EQ(rows, 5 * summary["optimizations"].get<int>());
+}
+
+}  // namespace

@@ -1,0 +1,125 @@
+#include "apps/scout/frontier_bench_command.h"
+
+#include <unistd.h>
+
+#include <iomanip>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "scout/common/atomic_file.h"
+#include "scout/common/error.h"
+#include "scout/frontier/frontier_engine.h"
+#include "scout/frontier/stopwatch.h"
+#include "scout/io/config.h"
+#include "scout/io/frontier_report.h"
+#include "scout/io/output_directory.h"
+#include "scout/sim/make_world.h"
+#include "scout/synthetic/synthetic_stream.h"
+
+namespace scout::apps {
+namespace {
+
+std::vector<std::string> SplitList(const std::string& list) {
+  std::vector<std::string> items;
+  std::stringstream ss(list);
+  std::string item;
+  while (std::getline(ss, item, ',')) {
+    if (!item.empty()) items.push_back(item);
+  }
+  return items;
+}
+
+}  // namespace
+
+CLI::App* AddFrontierBenchCommand(CLI::App& app, FrontierBenchArgs* args) {
+  CLI::App* cmd = app.add_subcommand(
+      "frontier-bench",
+      "Run every frontier update strategy in lockstep on a synthetic SLAM event stream and "
+      "score them against full recomputation");
+  cmd->add_option("--world", args->world, "office, museum, or a ROS map_server .yaml file")
+      ->capture_default_str();
+  cmd->add_option("--seed", args->seed, "seed of the world, trajectory, sensor noise and drift")
+      ->capture_default_str();
+  cmd->add_option("--out", args->out_dir, "output directory")->capture_default_str();
+  cmd->add_option("--config", args->config_file, "YAML options file (see config/default.yaml)");
+  cmd->add_option("--epsilon", args->epsilon_m,
+                  "bfs/direct threshold in metres (overrides frontier.epsilon_m)");
+  cmd->add_option("--strategies", args->strategies, "comma-separated strategies to run")
+      ->capture_default_str();
+  cmd->add_option("--picture-strategy", args->picture_strategy,
+                  "strategy whose frontier and last re-queried submaps frontiers.png shows")
+      ->capture_default_str();
+  cmd->add_flag("--quiet", args->quiet, "print only the final summary line");
+  return cmd;
+}
+
+int RunFrontierBench(const FrontierBenchArgs& args) {
+  const frontier::Stopwatch wall;
+  io::ScoutConfig config =
+      args.config_file.empty() ? io::ScoutConfig{} : io::LoadConfig(args.config_file);
+  if (args.epsilon_m) {
+    config.frontier.epsilon_m = *args.epsilon_m;
+  }
+  const std::vector<std::string> strategies = SplitList(args.strategies);
+  // Validates options and names before any long work or any output.
+  frontier::FrontierEngine engine(config.frontier, strategies, /*evaluate=*/true);
+  engine.strategy(args.picture_strategy);
+  const sim::World world = sim::MakeWorld(args.world, args.seed);
+  io::OutputDirectory out(args.out_dir);
+
+  const bool terminal = !args.quiet && ::isatty(STDERR_FILENO);
+  synthetic::SyntheticEventStream stream(world, config.synthetic, args.seed);
+  int events_seen = 0;
+  const synthetic::StreamStats stats = stream.Run([&](const events::SubmapEvent& event) {
+    engine.Apply(event);
+    ++events_seen;
+    if (terminal && events_seen % 200 == 0) {
+      std::cerr << "\rfrontier-bench: " << engine.catalog().size() << " submaps, "
+                << engine.optimizations() << " optimisations, " << engine.catalog().total_points()
+                << " local frontier points" << std::flush;
+    }
+  });
+  if (terminal) std::cerr << "\n";
+
+  nlohmann::json summary;
+  summary["world"] = args.world;
+  summary["seed"] = args.seed;
+  summary["submaps"] = engine.catalog().size();
+  summary["optimizations"] = engine.optimizations();
+  summary["local_frontier_points"] = engine.catalog().total_points();
+  summary["global_frontier_points"] = engine.GlobalFrontier("full").size();
+  summary["scans"] = stats.scans;
+  summary["loop_closures"] = stats.loop_closures;
+  summary["trajectory_length_m"] = stats.trajectory_length_m;
+  summary["grid_changes"] = engine.grid_changes();
+  summary["epsilon_m"] = config.frontier.epsilon_m;
+  summary["local_frontier_extraction_ms"] = engine.catalog_time_ms();
+  summary["frontier"] = io::FrontierSummary(engine);
+  summary["wall_time_s"] = wall.ElapsedUs() * 1e-6;
+
+  io::WriteFrontierCsv(engine, out.Stage("frontier.csv"));
+  io::WriteFrontierPicture(engine, args.picture_strategy, out.Stage("frontiers.png"));
+  WriteTextFileAtomically(out.Stage("summary.json"), summary.dump(2) + "\n");
+  out.Commit();
+
+  std::cout << "frontier-bench: world " << args.world << ", seed " << args.seed << ": "
+            << engine.catalog().size() << " submaps, " << engine.optimizations()
+            << " optimisations, " << engine.catalog().total_points() << " local frontier points\n";
+  std::cout << std::left << std::setw(8) << "strategy" << std::right << std::setw(14)
+            << "queried_pts" << std::setw(10) << "P" << std::setw(10) << "accuracy" << std::setw(11)
+            << "precision" << std::setw(9) << "recall" << std::setw(11) << "time_ms"
+            << "\n";
+  for (const frontier::StrategyTotals& t : engine.Totals()) {
+    std::cout << std::left << std::setw(8) << t.strategy << std::right << std::setw(14)
+              << t.queried_points << std::fixed << std::setprecision(4) << std::setw(10)
+              << t.performance_p << std::setw(10) << t.confusion.accuracy() << std::setw(11)
+              << t.confusion.precision() << std::setw(9) << t.confusion.recall()
+              << std::setprecision(1) << std::setw(11) << t.time_ms << "\n";
+  }
+  std::cout << "outputs: " << (out.path() / "summary.json").string() << ", frontier.csv, "
+            << "frontiers.png\n";
+  return 0;
+}
+
+}  // namespace scout::apps

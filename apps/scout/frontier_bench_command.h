@@ -1,0 +1,32 @@
+#ifndef SCOUT_APPS_SCOUT_FRONTIER_BENCH_COMMAND_H_
+#define SCOUT_APPS_SCOUT_FRONTIER_BENCH_COMMAND_H_
+
+#include <CLI/CLI.hpp>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace scout::apps {
+
+struct FrontierBenchArgs {
+  std::string world = "office";
+  uint64_t seed = 1;
+  std::string out_dir = "out/frontier-bench";
+  std::string config_file;
+  std::optional<double> epsilon_m;
+  std::string strategies = "full,dfd,bfs,direct,exact";
+  std::string picture_strategy = "exact";
+  bool quiet = false;
+};
+
+// Registers `scout frontier-bench` on 'app'.
+CLI::App* AddFrontierBenchCommand(CLI::App& app, FrontierBenchArgs* args);
+
+// Runs the lockstep frontier evaluation on a synthetic SLAM event stream and
+// writes summary.json, frontier.csv and frontiers.png into the output
+// directory. Returns the process exit code; throws InputError on bad input.
+int RunFrontierBench(const FrontierBenchArgs& args);
+
+}  // namespace scout::apps
+
+#endif  // SCOUT_APPS_SCOUT_FRONTIER_BENCH_COMMAND_H_

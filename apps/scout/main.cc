@@ -1,0 +1,40 @@
+// scout: autonomous exploration with submap graph SLAM and reachable frontiers.
+// Exit codes: 0 success, 2 bad input (the message names the file/key/value),
+// 1 an unexpected internal failure.
+
+#include <CLI/CLI.hpp>
+#include <exception>
+#include <iostream>
+
+#include "apps/scout/frontier_bench_command.h"
+#include "scout/common/error.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"Scout: reachable-frontier exploration on submap graph SLAM"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "scout 0.1.0");
+  scout::apps::FrontierBenchArgs bench_args;
+  CLI::App* bench = scout::apps::AddFrontierBenchCommand(app, &bench_args);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "scout: error: " << e.what() << " (see 'scout --help')\n";
+    return 2;
+  }
+  try {
+    if (bench->parsed()) return scout::apps::RunFrontierBench(bench_args);
+  } catch (const scout::InputError& e) {
+    std::cerr << "scout: error: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "scout: internal error: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,25 @@
+#ifndef SCOUT_IO_CONFIG_H_
+#define SCOUT_IO_CONFIG_H_
+
+#include <filesystem>
+
+#include "scout/frontier/frontier_options.h"
+#include "scout/synthetic/synthetic_stream.h"
+
+namespace scout::io {
+
+// Every option of the scout commands, one struct per module, defaults from
+// ALGORITHMS.md (config/default.yaml lists them all with comments).
+struct ScoutConfig {
+  frontier::FrontierOptions frontier;
+  synthetic::SyntheticStreamOptions synthetic;
+};
+
+// Reads a YAML options file; absent keys keep their defaults. Throws
+// InputError naming the file and key for a missing or malformed file, an
+// unknown key, or a value of the wrong type or range.
+ScoutConfig LoadConfig(const std::filesystem::path& path);
+
+}  // namespace scout::io
+
+#endif  // SCOUT_IO_CONFIG_H_

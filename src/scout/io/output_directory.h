@@ -1,0 +1,38 @@
+#ifndef SCOUT_IO_OUTPUT_DIRECTORY_H_
+#define SCOUT_IO_OUTPUT_DIRECTORY_H_
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace scout::io {
+
+// An output directory that never shows a partial result: files are written
+// into a hidden staging directory inside it and moved into place together by
+// Commit(). Without Commit() (an error, an interruption) the staging
+// directory is removed and the directory holds only what it held before.
+class OutputDirectory {
+ public:
+  // Creates 'dir' if needed and checks that it is writable, before any long
+  // computation starts. Throws InputError naming the directory otherwise.
+  explicit OutputDirectory(const std::filesystem::path& dir);
+  ~OutputDirectory();
+  OutputDirectory(const OutputDirectory&) = delete;
+  OutputDirectory& operator=(const OutputDirectory&) = delete;
+
+  // Returns where to write output 'name' now; registers it for Commit().
+  std::filesystem::path Stage(const std::string& name);
+  // Moves every staged file into the directory. Throws InputError on failure.
+  void Commit();
+
+  const std::filesystem::path& path() const { return dir_; }
+
+ private:
+  std::filesystem::path dir_;
+  std::filesystem::path staging_;
+  std::vector<std::string> names_;
+};
+
+}  // namespace scout::io
+
+#endif  // SCOUT_IO_OUTPUT_DIRECTORY_H_

@@ -1,0 +1,77 @@
+#include "scout/io/output_directory.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <fstream>
+#include <random>
+
+#include "scout/common/atomic_file.h"
+#include "scout/common/error.h"
+
+namespace scout::io {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path FreshDir() {
+  std::random_device rd;
+  const fs::path dir = fs::temp_directory_path() / ("scout_io_test_" + std::to_string(rd()));
+  fs::remove_all(dir);
+  return dir;
+}
+
+std::vector<std::string> Listing(const fs::path& dir) {
+  std::vector<std::string> names;
+  for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+TEST(OutputDirectory, CommitMovesEveryStagedFileIntoPlace) {
+  const fs::path dir = FreshDir();
+  {
+    OutputDirectory out(dir);
+    WriteTextFileAtomically(out.Stage("a.txt"), "alpha");
+    WriteTextFileAtomically(out.Stage("b.txt"), "beta");
+    EXPECT_TRUE(Listing(dir).size() == 1u);  // only the staging directory so far
+    out.Commit();
+  }
+  EXPECT_EQ(Listing(dir), (std::vector<std::string>{"a.txt", "b.txt"}));
+  std::ifstream in(dir / "a.txt");
+  std::string text;
+  in >> text;
+  EXPECT_EQ(text, "alpha");
+  fs::remove_all(dir);
+}
+
+TEST(OutputDirectory, WithoutCommitNothingIsLeftBehind) {
+  const fs::path dir = FreshDir();
+  fs::create_directories(dir);
+  WriteTextFileAtomically(dir / "older.txt", "kept");
+  try {
+    OutputDirectory out(dir);
+    WriteTextFileAtomically(out.Stage("summary.json"), "{}");
+    throw InputError("simulated failure half-way");
+  } catch (const InputError&) {
+  }
+  EXPECT_EQ(Listing(dir), (std::vector<std::string>{"older.txt"}));
+  fs::remove_all(dir);
+}
+
+TEST(OutputDirectory, RejectsADirectoryThatCannotBeCreated) {
+  const fs::path dir = FreshDir();
+  fs::create_directories(dir);
+  WriteTextFileAtomically(dir / "file", "x");
+  // A path below a regular file can never be a directory.
+  EXPECT_THROW(OutputDirectory(dir / "file" / "sub"), InputError);
+  try {
+    OutputDirectory bad(dir / "file" / "sub");
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("file/sub"), std::string::npos) << e.what();
+  }
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace scout::io

@@ -1,0 +1,106 @@
+#include "scout/io/yaml_fields.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "scout/common/error.h"
+
+namespace scout::io {
+
+YamlSection::YamlSection(const YAML::Node& node, std::string file, std::string prefix)
+    : node_(node), file_(std::move(file)), prefix_(std::move(prefix)) {
+  if (node_ && !node_.IsNull() && !node_.IsMap()) {
+    throw InputError(file_ + ": '" + (prefix_.empty() ? std::string("(top level)") : prefix_) +
+                     "': expected a mapping of option names to values");
+  }
+}
+
+std::string YamlSection::Name(const std::string& key) const {
+  return prefix_.empty() ? key : prefix_ + "." + key;
+}
+
+YAML::Node YamlSection::Take(const std::string& key) {
+  seen_.push_back(key);
+  if (!node_ || node_.IsNull()) return YAML::Node();
+  return node_[key];
+}
+
+void YamlSection::ReadDouble(const std::string& key, double* value) {
+  const YAML::Node n = Take(key);
+  if (!n) return;
+  try {
+    const double v = n.as<double>();
+    if (!std::isfinite(v)) throw YAML::Exception(YAML::Mark(), "not finite");
+    *value = v;
+  } catch (const YAML::Exception&) {
+    throw InputError(file_ + ": '" + Name(key) + "': expected a finite number, got '" +
+                     YAML::Dump(n) + "'");
+  }
+}
+
+void YamlSection::ReadPositive(const std::string& key, double* value) {
+  double v = *value;
+  ReadDouble(key, &v);
+  if (!(v > 0.0)) {
+    throw InputError(file_ + ": '" + Name(key) + "': expected a positive number, got " +
+                     std::to_string(v));
+  }
+  *value = v;
+}
+
+void YamlSection::ReadNonNegative(const std::string& key, double* value) {
+  double v = *value;
+  ReadDouble(key, &v);
+  if (v < 0.0) {
+    throw InputError(file_ + ": '" + Name(key) + "': expected a number >= 0, got " +
+                     std::to_string(v));
+  }
+  *value = v;
+}
+
+void YamlSection::ReadInt(const std::string& key, int* value, int min_value) {
+  const YAML::Node n = Take(key);
+  if (!n) return;
+  int v = 0;
+  try {
+    v = n.as<int>();
+  } catch (const YAML::Exception&) {
+    throw InputError(file_ + ": '" + Name(key) + "': expected an integer, got '" + YAML::Dump(n) +
+                     "'");
+  }
+  if (v < min_value) {
+    throw InputError(file_ + ": '" + Name(key) + "': expected an integer >= " +
+                     std::to_string(min_value) + ", got " + std::to_string(v));
+  }
+  *value = v;
+}
+
+void YamlSection::ReadBool(const std::string& key, bool* value) {
+  const YAML::Node n = Take(key);
+  if (!n) return;
+  try {
+    *value = n.as<bool>();
+  } catch (const YAML::Exception&) {
+    throw InputError(file_ + ": '" + Name(key) + "': expected true or false, got '" +
+                     YAML::Dump(n) + "'");
+  }
+}
+
+YamlSection YamlSection::Section(const std::string& key) {
+  return YamlSection(Take(key), file_, Name(key));
+}
+
+void YamlSection::RejectUnknownKeys() const {
+  if (!node_ || !node_.IsMap()) return;
+  for (const auto& kv : node_) {
+    const std::string key = kv.first.as<std::string>();
+    if (std::find(seen_.begin(), seen_.end(), key) == seen_.end()) {
+      std::string known;
+      for (const std::string& s : seen_) known += (known.empty() ? "" : ", ") + s;
+      throw InputError(file_ + ": unknown option '" + Name(key) + "' (expected one of: " + known +
+                       ")");
+    }
+  }
+}
+
+}  // namespace scout::io

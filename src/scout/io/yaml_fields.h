@@ -1,0 +1,43 @@
+#ifndef SCOUT_IO_YAML_FIELDS_H_
+#define SCOUT_IO_YAML_FIELDS_H_
+
+#include <yaml-cpp/yaml.h>
+
+#include <string>
+#include <vector>
+
+namespace scout::io {
+
+// Reads the fields of one YAML mapping into option structs, naming the file
+// and the full key ("frontier.epsilon_m") in every error; rejects keys it was
+// not asked for, so a misspelt option never passes silently.
+class YamlSection {
+ public:
+  // 'node' must be a mapping (or absent/null: then nothing is read).
+  YamlSection(const YAML::Node& node, std::string file, std::string prefix);
+
+  // Each Read* leaves 'value' unchanged when the key is absent. Throws
+  // InputError when the value has the wrong type or is out of range.
+  void ReadDouble(const std::string& key, double* value);
+  void ReadPositive(const std::string& key, double* value);
+  void ReadNonNegative(const std::string& key, double* value);
+  void ReadInt(const std::string& key, int* value, int min_value);
+  void ReadBool(const std::string& key, bool* value);
+  // Returns the sub-section 'key' (possibly empty).
+  YamlSection Section(const std::string& key);
+  // Throws InputError naming the first key that no Read*/Section asked for.
+  void RejectUnknownKeys() const;
+
+ private:
+  std::string Name(const std::string& key) const;
+  YAML::Node Take(const std::string& key);
+
+  YAML::Node node_;
+  std::string file_;
+  std::string prefix_;
+  std::vector<std::string> seen_;
+};
+
+}  // namespace scout::io
+
+#endif  // SCOUT_IO_YAML_FIELDS_H_
