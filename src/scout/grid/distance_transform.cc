@@ -1,0 +1,87 @@
+#include "scout/grid/distance_transform.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace scout::grid {
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// Felzenszwalb & Huttenlocher's 1-D transform: d[q] = min_p (q - p)^2 + f[p],
+// the lower envelope of the parabolas rooted at (p, f[p]). Infinite samples
+// are left out of the envelope rather than represented by a large constant, so
+// intersections are computed only between finite parabolas (no inf - inf) and
+// the result stays exact. 'v' and 'z' are scratch space of size n and n + 1.
+// Values are doubles: squared distances of large grids exceed float's exact
+// integer range, and the intersection formula needs the extra precision.
+void DistanceTransform1d(const std::vector<double>& f, int n, std::vector<double>* d,
+                         std::vector<int>* v, std::vector<double>* z) {
+  int k = -1;  // index of the rightmost parabola in the envelope
+  for (int q = 0; q < n; ++q) {
+    if (f[q] == kInfinity) continue;
+    double s = -kInfinity;
+    while (k >= 0) {
+      const int p = (*v)[k];
+      s = ((f[q] + static_cast<double>(q) * q) - (f[p] + static_cast<double>(p) * p)) /
+          (2.0 * (q - p));
+      if (s > (*z)[k]) break;
+      --k;  // parabola p is hidden below q's from z[k] on
+    }
+    if (k < 0) s = -kInfinity;
+    ++k;
+    (*v)[k] = q;
+    (*z)[k] = s;
+    (*z)[k + 1] = kInfinity;
+  }
+  if (k < 0) {
+    for (int q = 0; q < n; ++q) (*d)[q] = kInfinity;
+    return;
+  }
+  int j = 0;
+  for (int q = 0; q < n; ++q) {
+    while ((*z)[j + 1] < q) ++j;
+    const double dq = q - (*v)[j];
+    (*d)[q] = dq * dq + f[(*v)[j]];
+  }
+}
+
+}  // namespace
+
+std::vector<float> SquaredDistanceToNearestSite(const std::vector<uint8_t>& is_site, int width,
+                                                int height) {
+  if (width < 0 || height < 0 ||
+      is_site.size() != static_cast<size_t>(width) * static_cast<size_t>(height)) {
+    throw std::invalid_argument("SquaredDistanceToNearestSite: mask has " +
+                                std::to_string(is_site.size()) + " cells, expected " +
+                                std::to_string(width) + " x " + std::to_string(height));
+  }
+  const size_t num_cells = is_site.size();
+  std::vector<double> along_x(num_cells);
+  const int n_max = std::max(width, height);
+  std::vector<double> f(n_max), d(n_max), z(n_max + 1);
+  std::vector<int> v(n_max);
+
+  // Pass 1, along each row: squared distance to the nearest site in the same row.
+  for (int y = 0; y < height; ++y) {
+    const size_t row = static_cast<size_t>(y) * width;
+    for (int x = 0; x < width; ++x) f[x] = is_site[row + x] ? 0.0 : kInfinity;
+    DistanceTransform1d(f, width, &d, &v, &z);
+    for (int x = 0; x < width; ++x) along_x[row + x] = d[x];
+  }
+  // Pass 2, along each column over the row results: dx^2 + dy^2 minimised.
+  std::vector<float> result(num_cells);
+  for (int x = 0; x < width; ++x) {
+    for (int y = 0; y < height; ++y) f[y] = along_x[static_cast<size_t>(y) * width + x];
+    DistanceTransform1d(f, height, &d, &v, &z);
+    for (int y = 0; y < height; ++y) {
+      result[static_cast<size_t>(y) * width + x] = static_cast<float>(d[y]);
+    }
+  }
+  return result;
+}
+
+}  // namespace scout::grid

@@ -1,0 +1,57 @@
+#include "scout/grid/probability_values.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace scout::grid {
+namespace {
+
+// The linear map is anchored at its midpoint, in double, with the exact decimal
+// bounds 0.1 / 0.9: then value 1, kMidValue and kMaxValue decode to exactly
+// kMinProbability, 0.5f and kMaxProbability, so "p == 0.5 is unknown" (ALGORITHMS §1)
+// is reachable and the clamps are hit exactly after repeated updates.
+constexpr double kMinProbabilityExact = 0.1;
+constexpr double kMaxProbabilityExact = 0.9;
+static_assert(static_cast<float>(kMinProbabilityExact) == kMinProbability);
+static_assert(static_cast<float>(kMaxProbabilityExact) == kMaxProbability);
+constexpr int kMidValue = (1 + kMaxValue) / 2;  // 16384 decodes to 0.5
+constexpr double kProbabilityPerValue =
+    (kMaxProbabilityExact - kMinProbabilityExact) / (kMaxValue - 1);
+
+}  // namespace
+
+uint16_t ProbabilityToValue(float p) {
+  // NaN carries no information about the cell; treat it as the no-information 0.5.
+  const double clamped =
+      std::isnan(p) ? 0.5
+                    : std::clamp(static_cast<double>(p), static_cast<double>(kMinProbability),
+                                 static_cast<double>(kMaxProbability));
+  const long value = kMidValue + std::lround((clamped - 0.5) / kProbabilityPerValue);
+  return static_cast<uint16_t>(std::clamp<long>(value, 1, kMaxValue));
+}
+
+float ValueToProbability(uint16_t value) {
+  // Tolerate a value that still carries the update marker.
+  const int v = value & kMaxValue;
+  if (v == kUnknownValue) return 0.5f;
+  return static_cast<float>(0.5 + (v - kMidValue) * kProbabilityPerValue);
+}
+
+std::vector<uint16_t> ComputeLookupTableToApplyOdds(float odds) {
+  if (!(odds > 0.f) || !std::isfinite(odds)) {
+    throw std::invalid_argument("ComputeLookupTableToApplyOdds: odds must be positive and finite");
+  }
+  // Indexed by the raw stored value: the lower half holds cells not yet updated
+  // in this scan, the upper half (kUpdateMarker set) those already updated.
+  std::vector<uint16_t> table(2 * static_cast<size_t>(kUpdateMarker));
+  table[kUnknownValue] = ProbabilityToValue(ProbabilityFromOdds(odds)) | kUpdateMarker;
+  for (int v = 1; v <= kMaxValue; ++v) {
+    const float updated = ProbabilityFromOdds(odds * Odds(ValueToProbability(v)));
+    table[v] = ProbabilityToValue(updated) | kUpdateMarker;
+  }
+  for (size_t v = kUpdateMarker; v < table.size(); ++v) table[v] = static_cast<uint16_t>(v);
+  return table;
+}
+
+}  // namespace scout::grid
