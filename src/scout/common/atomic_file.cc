@@ -1,8 +1,9 @@
 #include "scout/common/atomic_file.h"
 
+#include <unistd.h>
+
 #include <fstream>
 #include <system_error>
-#include <unistd.h>
 
 #include "scout/common/error.h"
 

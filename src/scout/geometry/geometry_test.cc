@@ -60,8 +60,8 @@ TEST(Box2d, TransformBoxContainsTransformedCorners) {
   const Box2d box({0, 0}, {2, 1});
   const Rigid2d t(5, 5, kPi / 4);
   const Box2d out = TransformBox(t, box);
-  for (const Eigen::Vector2d c : {Eigen::Vector2d(0, 0), Eigen::Vector2d(2, 1),
-                                  Eigen::Vector2d(0, 1), Eigen::Vector2d(2, 0)}) {
+  for (const Eigen::Vector2d& c : {Eigen::Vector2d(0, 0), Eigen::Vector2d(2, 1),
+                                   Eigen::Vector2d(0, 1), Eigen::Vector2d(2, 0)}) {
     EXPECT_TRUE(out.Inflated(1e-12).Contains(t * c));
   }
   EXPECT_FALSE(out.Contains({0, 0}));

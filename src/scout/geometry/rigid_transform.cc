@@ -17,8 +17,7 @@ std::ostream& operator<<(std::ostream& os, const Rigid2d& t) {
   return os << "{x: " << t.x() << ", y: " << t.y() << ", theta: " << t.theta() << "}";
 }
 
-double MaxDisplacementWithin(const Rigid2d& delta, const Eigen::Vector2d& center,
-                             double radius_m) {
+double MaxDisplacementWithin(const Rigid2d& delta, const Eigen::Vector2d& center, double radius_m) {
   // A point q = center + r moves by (R - I) q + t = [(R - I) center + t] + (R - I) r, and
   // |(R - I) r| = 2 |sin(theta / 2)| |r|.
   const Eigen::Vector2d center_motion = delta * center - center;
