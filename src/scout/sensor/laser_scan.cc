@@ -1,0 +1,46 @@
+#include "scout/sensor/laser_scan.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace scout::sensor {
+namespace {
+
+void CheckNonNegative(const char* name, double value) {
+  if (!(value >= 0.0)) {
+    throw std::invalid_argument(std::string("range filter: ") + name + " must be >= 0, got " +
+                                std::to_string(value));
+  }
+}
+
+}  // namespace
+
+RangeData ToRangeData(const LaserScan& scan, const RangeFilterOptions& options) {
+  CheckNonNegative("min_range_m", options.min_range_m);
+  CheckNonNegative("max_range_m", options.max_range_m);
+  CheckNonNegative("miss_ray_length_m", options.miss_ray_length_m);
+  const double min_range_m = std::max<double>(options.min_range_m, scan.range_min_m);
+  const double max_range_m = std::min<double>(options.max_range_m, scan.range_max_m);
+
+  RangeData data;
+  data.returns.reserve(scan.ranges.size());
+  for (size_t k = 0; k < scan.ranges.size(); ++k) {
+    const double angle_rad =
+        static_cast<double>(scan.angle_min_rad) + static_cast<double>(k) * scan.angle_increment_rad;
+    const Eigen::Vector2d direction(std::cos(angle_rad), std::sin(angle_rad));
+    const double range_m = scan.ranges[k];
+    const bool no_return = std::isnan(range_m) || range_m >= max_range_m;
+    if (no_return) {
+      if (options.miss_ray_length_m > 0.0) {
+        data.misses.push_back(options.miss_ray_length_m * direction);
+      }
+    } else if (range_m >= min_range_m) {
+      data.returns.push_back(range_m * direction);
+    }
+  }
+  return data;
+}
+
+}  // namespace scout::sensor

@@ -1,0 +1,53 @@
+#ifndef SCOUT_SIM_LIDAR_H_
+#define SCOUT_SIM_LIDAR_H_
+
+#include <random>
+
+#include "scout/geometry/rigid_transform.h"
+#include "scout/sensor/laser_scan.h"
+#include "scout/sim/world.h"
+
+namespace scout::sim {
+
+// A simulated 2D lidar at the robot's centre, facing forward. Defaults are the
+// paper's Hokuyo (ALGORITHMS §8): 8 m range, 180 degree field of view.
+struct LidarOptions {
+  // Returns farther than this are reported as +infinity (no return).
+  double range_max_m = 8.0;
+  // Smallest range the sensor reports; ranges are never below it.
+  double range_min_m = 0.02;
+  // Field of view, centred on the heading. 360 gives a full circle.
+  double fov_deg = 180.0;
+  // Number of beams spread evenly over the field of view (both ends included
+  // below 360 degrees).
+  int beams = 181;
+  // Standard deviation of the Gaussian error added to every return.
+  double range_noise_stddev_m = 0.01;
+  // Probability that a beam reports nothing (NaN) whatever it points at.
+  double dropout_probability = 0.0;
+};
+
+class Lidar {
+ public:
+  // Throws InputError naming the option if 'options' is invalid.
+  explicit Lidar(const LidarOptions& options);
+
+  const LidarOptions& options() const { return options_; }
+
+  // Returns the scan seen from 'pose' (sensor frame -> world frame) in the TRUE
+  // world: every beam ends where it enters the first occupied or unknown cell
+  // (exact ray casting), plus noise; beyond range_max_m it reports +infinity.
+  // Always draws the same number of variates from 'rng' per beam, so noise
+  // sequences do not depend on what the beams hit.
+  sensor::LaserScan Scan(const World& world, const geometry::Rigid2d& pose, double time_s,
+                         std::mt19937_64& rng) const;
+
+ private:
+  LidarOptions options_;
+  double angle_min_rad_ = 0.0;
+  double angle_increment_rad_ = 0.0;
+};
+
+}  // namespace scout::sim
+
+#endif  // SCOUT_SIM_LIDAR_H_

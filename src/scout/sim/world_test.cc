@@ -1,0 +1,112 @@
+#include "scout/sim/world.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <random>
+#include <string>
+
+#include "scout/common/error.h"
+#include "scout/grid/map_io.h"
+#include "scout/sim/clearance.h"
+#include "scout/sim/make_world.h"
+#include "scout/sim/world_painter.h"
+
+namespace scout::sim {
+namespace {
+
+// A fresh temporary directory, removed with its contents on destruction.
+class TempDirectory {
+ public:
+  TempDirectory() {
+    std::random_device random;
+    path_ = std::filesystem::temp_directory_path() /
+            ("scout_sim_test_" + std::to_string(::getpid()) + "_" + std::to_string(random()));
+    std::filesystem::create_directories(path_);
+  }
+  ~TempDirectory() {
+    std::error_code ignored;
+    std::filesystem::remove_all(path_, ignored);
+  }
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  std::filesystem::path path_;
+};
+
+geometry::Box2d Box(double x0, double y0, double x1, double y1) {
+  return geometry::Box2d(Eigen::Vector2d(x0, y0), Eigen::Vector2d(x1, y1));
+}
+
+// 4 m x 2 m at 0.1 m, unknown outside two free rooms: a 1.0 x 1.0 m one on the
+// left and a larger 1.6 x 1.2 m one on the right, with walls around both.
+grid::OccupancyMap MakeTwoRoomMap() {
+  grid::OccupancyMap map = MakeFilledMap(Box(0, 0, 4, 2), 0.1, grid::CellState::kUnknown);
+  FillBox(Box(0.2, 0.2, 1.4, 1.4), grid::CellState::kOccupied, &map);
+  FillBox(Box(0.3, 0.3, 1.3, 1.3), grid::CellState::kFree, &map);
+  FillBox(Box(2.0, 0.2, 3.8, 1.6), grid::CellState::kOccupied, &map);
+  FillBox(Box(2.1, 0.3, 3.7, 1.5), grid::CellState::kFree, &map);
+  return map;
+}
+
+TEST(Clearance, MeasuresDistanceToNearestNonFreeCell) {
+  const grid::OccupancyMap map = MakeTwoRoomMap();
+  const std::vector<float> clearance = ComputeClearance(map);
+  const auto at = [&](double x, double y) {
+    return clearance[map.limits.FlatIndex(map.limits.CellContaining(Eigen::Vector2d(x, y)))];
+  };
+  EXPECT_FLOAT_EQ(at(0.35, 0.35), 0.1f);
+  EXPECT_FLOAT_EQ(at(0.45, 0.75), 0.2f);
+  EXPECT_FLOAT_EQ(at(0.05, 0.05), 0.0f);
+}
+
+TEST(Clearance, TreatsOutsideOfMapAsNotFree) {
+  const grid::OccupancyMap map = MakeFilledMap(Box(0, 0, 1, 1), 0.1, grid::CellState::kFree);
+  const std::vector<float> clearance = ComputeClearance(map);
+  EXPECT_FLOAT_EQ(clearance[0], 0.1f);
+  EXPECT_FLOAT_EQ(clearance[map.limits.FlatIndex({4, 4})], 0.5f);
+}
+
+TEST(LoadMapWorld, StartsAtLargestClearanceOfLargestComponent) {
+  const TempDirectory dir;
+  const std::filesystem::path yaml = dir.path() / "two_rooms.yaml";
+  grid::WriteMapServerMap(MakeTwoRoomMap(), yaml);
+  const World world = LoadMapWorld(yaml);
+  EXPECT_EQ(world.name, "two_rooms");
+  EXPECT_EQ(world.map.limits.width(), 40);
+  // The right room's cells with the largest clearance (0.6 m) are in its middle row.
+  EXPECT_NEAR(world.start.y(), 0.85, 1e-6);
+  EXPECT_GE(world.start.x(), 2.6);
+  EXPECT_LE(world.start.x(), 3.2);
+  EXPECT_EQ(world.map.at(world.map.limits.CellContaining(world.start)), grid::CellState::kFree);
+}
+
+TEST(LoadMapWorld, MapWithoutFreeCellIsAnInputError) {
+  const TempDirectory dir;
+  const std::filesystem::path yaml = dir.path() / "solid.yaml";
+  grid::WriteMapServerMap(MakeFilledMap(Box(0, 0, 1, 1), 0.1, grid::CellState::kOccupied), yaml);
+  EXPECT_THROW(LoadMapWorld(yaml), InputError);
+}
+
+TEST(MakeWorld, BuildsNamedWorldsAndLoadsYaml) {
+  EXPECT_EQ(MakeWorld("office", 1).name, "office");
+  const TempDirectory dir;
+  const std::filesystem::path yaml = dir.path() / "rooms.yaml";
+  grid::WriteMapServerMap(MakeTwoRoomMap(), yaml);
+  EXPECT_EQ(MakeWorld(yaml.string(), 1).name, "rooms");
+}
+
+TEST(MakeWorld, UnknownNameIsAnInputError) {
+  try {
+    MakeWorld("castle", 1);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "unknown world 'castle': expected office, museum or a map_server .yaml file");
+  }
+  EXPECT_THROW(MakeWorld("/no/such/map.yaml", 1), InputError);
+}
+
+}  // namespace
+}  // namespace scout::sim
