@@ -14,6 +14,7 @@ namespace scout::sim {
 struct Interval {
   double lo = 0.0;
   double hi = 0.0;
+  // Returns hi - lo.
   double length() const { return hi - lo; }
 };
 

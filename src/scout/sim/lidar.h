@@ -29,9 +29,12 @@ struct LidarOptions {
 
 class Lidar {
  public:
+  // A lidar with the default (paper) options.
+  Lidar() : Lidar(LidarOptions{}) {}
   // Throws InputError naming the option if 'options' is invalid.
   explicit Lidar(const LidarOptions& options);
 
+  // Returns the options the lidar was built with.
   const LidarOptions& options() const { return options_; }
 
   // Returns the scan seen from 'pose' (sensor frame -> world frame) in the TRUE

@@ -18,7 +18,9 @@ class GridSearch {
   // Throws std::invalid_argument if the sizes differ.
   GridSearch(const grid::MapLimits& limits, std::vector<uint8_t> traversable);
 
+  // Returns the geometry of the searched grid.
   const grid::MapLimits& limits() const { return limits_; }
+  // Returns true if the cell with flat index 'cell' may be entered.
   bool traversable(int64_t cell) const { return traversable_[cell] != 0; }
 
   // Settles the cells reachable from 'source' in order of path length (ties by

@@ -79,7 +79,7 @@ TEST(SyntheticEventStream, SameSeedGivesIdenticalEvents) {
 }
 
 TEST(SyntheticEventStream, SubmapsGetTwiceScansPerSubmapInsertionsThenFinish) {
-  const Recorded run = RunStream(SmallOffice(2), 1, 0);
+  const Recorded run = RunStream(SmallOffice(2), 1, 4000);
   const int scans_per_submap = SyntheticStreamOptions{}.scans_per_submap;
   EXPECT_EQ(run.stats.submaps, (run.stats.scans + scans_per_submap - 1) / scans_per_submap);
   std::map<int, int> insertions;
@@ -107,7 +107,7 @@ TEST(SyntheticEventStream, SubmapsGetTwiceScansPerSubmapInsertionsThenFinish) {
 }
 
 TEST(SyntheticEventStream, OptimizationsCarryAPosePerExistingSubmap) {
-  const Recorded run = RunStream(SmallOffice(2), 1, 0);
+  const Recorded run = RunStream(SmallOffice(2), 1, 4000);
   const SyntheticStreamOptions options;
   EXPECT_EQ(run.stats.optimizations, run.stats.scans / options.optimize_every_n_scans);
   int submaps_so_far = 0, optimizations = 0;
