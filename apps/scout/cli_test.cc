@@ -23,7 +23,7 @@ struct Result {
   std::string output;  // stdout and stderr
 };
 
-Result Run(const std::string& args) {
+Result RunScout(const std::string& args) {
   const std::string command = std::string(SCOUT_BINARY) + " " + args + " 2>&1";
   Result r;
   FILE* pipe = popen(command.c_str(), "r");
@@ -59,38 +59,38 @@ class ScoutCli : public ::testing::Test {
 };
 
 TEST_F(ScoutCli, HelpAndVersionSucceed) {
-  EXPECT_EQ(Run("--help").exit_code, 0);
-  EXPECT_EQ(Run("frontier-bench --help").exit_code, 0);
+  EXPECT_EQ(RunScout("--help").exit_code, 0);
+  EXPECT_EQ(RunScout("frontier-bench --help").exit_code, 0);
 }
 
 TEST_F(ScoutCli, BadCommandLineExitsWithTwo) {
-  EXPECT_EQ(Run("").exit_code, 2);
-  EXPECT_EQ(Run("no-such-command").exit_code, 2);
-  EXPECT_EQ(Run("frontier-bench --seed notanumber").exit_code, 2);
+  EXPECT_EQ(RunScout("").exit_code, 2);
+  EXPECT_EQ(RunScout("no-such-command").exit_code, 2);
+  EXPECT_EQ(RunScout("frontier-bench --seed notanumber").exit_code, 2);
 }
 
 TEST_F(ScoutCli, BadInputsNameWhatIsWrongAndLeaveNoOutputs) {
   const fs::path out = dir_ / "out";
   const std::string o = " --out " + out.string();
-  Result r = Run("frontier-bench --world atlantis" + o);
+  Result r = RunScout("frontier-bench --world atlantis" + o);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find("unknown world 'atlantis'"), std::string::npos) << r.output;
-  r = Run("frontier-bench --world " + (dir_ / "missing.yaml").string() + o);
+  r = RunScout("frontier-bench --world " + (dir_ / "missing.yaml").string() + o);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find("missing.yaml"), std::string::npos) << r.output;
-  r = Run("frontier-bench --strategies dfd,magic --world office" + o);
+  r = RunScout("frontier-bench --strategies dfd,magic --world office" + o);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find("'magic'"), std::string::npos) << r.output;
-  r = Run("frontier-bench --epsilon -1 --world office" + o);
+  r = RunScout("frontier-bench --epsilon -1 --world office" + o);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find("epsilon_m"), std::string::npos) << r.output;
   scout::WriteTextFileAtomically(dir_ / "bad.yaml", "frontier:\n  inflation_radius: 0.3\n");
-  r = Run("frontier-bench --config " + (dir_ / "bad.yaml").string() + o);
+  r = RunScout("frontier-bench --config " + (dir_ / "bad.yaml").string() + o);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find("frontier.inflation_radius"), std::string::npos) << r.output;
   scout::WriteTextFileAtomically(dir_ / "file", "x");
-  r = Run("frontier-bench --world " + (dir_ / "rooms.yaml").string() + " --out " +
-          (dir_ / "file" / "sub").string());
+  r = RunScout("frontier-bench --world " + (dir_ / "rooms.yaml").string() + " --out " +
+               (dir_ / "file" / "sub").string());
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find("file/sub"), std::string::npos) << r.output;
   EXPECT_TRUE(!fs::exists(out) || fs::is_empty(out));
@@ -98,8 +98,8 @@ TEST_F(ScoutCli, BadInputsNameWhatIsWrongAndLeaveNoOutputs) {
 
 TEST_F(ScoutCli, FrontierBenchWritesConsistentOutputs) {
   const fs::path out = dir_ / "out";
-  const Result r = Run("frontier-bench --quiet --world " + (dir_ / "rooms.yaml").string() +
-                       " --seed 3 --out " + out.string());
+  const Result r = RunScout("frontier-bench --quiet --world " + (dir_ / "rooms.yaml").string() +
+                            " --seed 3 --out " + out.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   std::vector<std::string> names;
   for (const auto& e : fs::directory_iterator(out)) names.push_back(e.path().filename());

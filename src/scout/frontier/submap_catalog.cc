@@ -1,5 +1,6 @@
 #include "scout/frontier/submap_catalog.h"
 
+#include <cmath>
 #include <string>
 #include <unordered_map>
 
@@ -80,14 +81,18 @@ SubmapChange SubmapCatalog::Apply(const events::SubmapChanged& event) {
 
   LocalFrontier frontier =
       ExtractReachableFrontier(states, limits, event.scan_origins, options_.inflation_radius_m);
-  // Points are cell centres: match old and new by metric position, which
-  // survives a grown grid (same resolution, same lattice).
+  // Points are cell centres: match old and new by their cell on the submap's
+  // lattice, fixed when the submap first appeared (a grown grid keeps the
+  // lattice but moves its origin by whole cells). Rounding offsets from a fixed
+  // lattice point is stable; flooring raw coordinates is not.
+  if (change.is_new) record.lattice_origin = limits.CellCenter({0, 0});
   std::unordered_map<int64_t, int> old_index;
   old_index.reserve(record.frontier.cells.size());
   const double res = limits.resolution();
   const auto key = [&](const Eigen::Vector2d& p) {
-    const int64_t kx = static_cast<int64_t>(std::floor(p.x() / res));
-    const int64_t ky = static_cast<int64_t>(std::floor(p.y() / res));
+    const Eigen::Vector2d cells = (p - record.lattice_origin) / res;
+    const int64_t kx = std::llround(cells.x());
+    const int64_t ky = std::llround(cells.y());
     return (kx << 32) ^ (ky & 0xffffffff);
   };
   for (size_t k = 0; k < record.frontier.points_m.size(); ++k) {

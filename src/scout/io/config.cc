@@ -2,6 +2,8 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <numbers>
+
 #include "scout/common/error.h"
 #include "scout/io/yaml_fields.h"
 
@@ -13,6 +15,75 @@ void ReadFrontier(YamlSection s, frontier::FrontierOptions* o) {
   s.ReadPositive("epsilon_m", &o->epsilon_m);
   s.ReadPositive("lidar_range_m", &o->lidar_range_m);
   s.ReadPositive("exact_slack_m", &o->exact_slack_m);
+  s.RejectUnknownKeys();
+}
+
+void ReadSynthetic(YamlSection s, synthetic::SyntheticStreamOptions* o) {
+  s.ReadPositive("resolution_m", &o->resolution_m);
+  s.ReadInt("scans_per_submap", &o->scans_per_submap, 1);
+  s.ReadPositive("scan_spacing_m", &o->scan_spacing_m);
+  double spacing_deg = o->scan_spacing_rad * 180.0 / std::numbers::pi;
+  s.ReadPositive("scan_spacing_deg", &spacing_deg);
+  o->scan_spacing_rad = spacing_deg * std::numbers::pi / 180.0;
+  s.ReadPositive("linear_speed_mps", &o->linear_speed_mps);
+  s.ReadPositive("angular_speed_radps", &o->angular_speed_radps);
+  s.ReadInt("optimize_every_n_scans", &o->optimize_every_n_scans, 1);
+  s.ReadInt("max_scans", &o->max_scans, 0);
+  {
+    YamlSection l = s.Section("lidar");
+    l.ReadPositive("range_max_m", &o->lidar.range_max_m);
+    l.ReadNonNegative("range_min_m", &o->lidar.range_min_m);
+    l.ReadPositive("fov_deg", &o->lidar.fov_deg);
+    l.ReadInt("beams", &o->lidar.beams, 2);
+    l.ReadNonNegative("range_noise_stddev_m", &o->lidar.range_noise_stddev_m);
+    l.ReadNonNegative("dropout_probability", &o->lidar.dropout_probability);
+    l.RejectUnknownKeys();
+  }
+  {
+    YamlSection r = s.Section("range_filter");
+    r.ReadNonNegative("min_range_m", &o->range_filter.min_range_m);
+    r.ReadPositive("max_range_m", &o->range_filter.max_range_m);
+    r.ReadNonNegative("miss_ray_length_m", &o->range_filter.miss_ray_length_m);
+    r.RejectUnknownKeys();
+  }
+  {
+    YamlSection in = s.Section("insertion");
+    in.ReadPositive("hit_probability", &o->insertion.hit_probability);
+    in.ReadPositive("miss_probability", &o->insertion.miss_probability);
+    in.RejectUnknownKeys();
+  }
+  {
+    YamlSection t = s.Section("tour");
+    t.ReadPositive("path_clearance_m", &o->tour.path_clearance_m);
+    t.ReadPositive("waypoint_clearance_m", &o->tour.waypoint_clearance_m);
+    t.ReadPositive("waypoint_spacing_m", &o->tour.waypoint_spacing_m);
+    t.ReadBool("return_to_start", &o->tour.return_to_start);
+    t.ReadPositive("max_shortcut_m", &o->tour.max_shortcut_m);
+    t.ReadPositive("smoothing_spacing_m", &o->tour.smoothing_spacing_m);
+    t.ReadInt("smoothing_iterations", &o->tour.smoothing_iterations, 0);
+    t.ReadNonNegative("min_pose_clearance_m", &o->tour.min_pose_clearance_m);
+    t.RejectUnknownKeys();
+  }
+  {
+    YamlSection c = s.Section("corrections");
+    synthetic::CorrectionModelOptions& m = o->corrections;
+    c.ReadNonNegative("drift_translation_m_per_sqrt_m", &m.drift_translation_m_per_sqrt_m);
+    c.ReadNonNegative("drift_heading_rad_per_sqrt_m", &m.drift_heading_rad_per_sqrt_m);
+    c.ReadNonNegative("drift_heading_rad_per_sqrt_rad", &m.drift_heading_rad_per_sqrt_rad);
+    c.ReadNonNegative("newest_pull_fraction", &m.newest_pull_fraction);
+    c.ReadNonNegative("pull_decay_per_submap", &m.pull_decay_per_submap);
+    c.ReadNonNegative("newest_jitter_m", &m.newest_jitter_m);
+    c.ReadNonNegative("newest_jitter_rad", &m.newest_jitter_rad);
+    c.ReadNonNegative("min_nudge_m", &m.min_nudge_m);
+    c.ReadNonNegative("min_nudge_rad", &m.min_nudge_rad);
+    c.ReadPositive("loop_closure_distance_m", &m.loop_closure_distance_m);
+    c.ReadInt("min_loop_closure_age_submaps", &m.min_loop_closure_age_submaps, 1);
+    c.ReadNonNegative("min_loop_closure_travel_m", &m.min_loop_closure_travel_m);
+    c.ReadNonNegative("loop_closure_error_m", &m.loop_closure_error_m);
+    c.ReadNonNegative("loop_closure_error_rad", &m.loop_closure_error_rad);
+    c.ReadPositive("loop_closure_sample_spacing_m", &m.loop_closure_sample_spacing_m);
+    c.RejectUnknownKeys();
+  }
   s.RejectUnknownKeys();
 }
 

@@ -21,8 +21,10 @@ std::string YamlSection::Name(const std::string& key) const {
 
 YAML::Node YamlSection::Take(const std::string& key) {
   seen_.push_back(key);
-  if (!node_ || node_.IsNull()) return YAML::Node();
-  return node_[key];
+  if (!node_ || node_.IsNull()) return YAML::Node(YAML::NodeType::Undefined);
+  // Const access: the non-const operator[] would insert the key.
+  const YAML::Node& node = node_;
+  return node[key];
 }
 
 void YamlSection::ReadDouble(const std::string& key, double* value) {
