@@ -98,6 +98,19 @@ void ExactStrategy::AddEntry(int i, uint32_t k, Watch* w, const AnswerMap& answe
   SetObjects(i, k, false, objects);
 }
 
+void ExactStrategy::Reevaluate(int i, const Watch& w, const AnswerMap& answers,
+                               const Eigen::Vector2d& p, const Eigen::Vector2d& q, Entry* e) {
+  Mark(i, e->point);
+  const bool objects = answers.Objects(q);
+  SetObjects(i, e->point, e->objects, objects);
+  const double margin = answers.Margin(q) - kSafety_m;
+  e->objects = objects;
+  e->ref_x_m = static_cast<float>(q.x());
+  e->ref_y_m = static_cast<float>(q.y());
+  e->ref_margin_m = static_cast<float>(margin);
+  e->key_m = static_cast<float>(margin - (RefOf(*e) - w.sort_anchor * p).norm());
+}
+
 void ExactStrategy::Rekey(int i, Watch* w) {
   const std::vector<Eigen::Vector2d>& points = catalog_.submap(i).frontier.points_m;
   const geometry::Rigid2d rel = Relative(i, w->j);
@@ -128,15 +141,7 @@ void ExactStrategy::Refresh(int i, Watch* w) {
     const Eigen::Vector2d& p = points[it->point];
     const Eigen::Vector2d q = catalog_.PointInSubmap(i, p, w->j);
     if ((q - RefOf(*it)).norm() < it->ref_margin_m) continue;
-    Mark(i, it->point);
-    const bool objects = answers.Objects(q);
-    SetObjects(i, it->point, it->objects, objects);
-    const double margin = answers.Margin(q) - kSafety_m;
-    it->objects = objects;
-    it->ref_x_m = static_cast<float>(q.x());
-    it->ref_y_m = static_cast<float>(q.y());
-    it->ref_margin_m = static_cast<float>(margin);
-    it->key_m = static_cast<float>(margin - (RefOf(*it) - w->sort_anchor * p).norm());
+    Reevaluate(i, *w, answers, p, q, &*it);
   }
   const size_t checked = static_cast<size_t>(end - w->entries.begin());
   // When most entries need a check each round, move the keys to the current pose.
@@ -158,15 +163,7 @@ void ExactStrategy::ReviewNearChange(int i, Watch* w, const geometry::Box2d& reg
     if (region.DistanceTo(RefOf(e)) >= e.ref_margin_m) continue;
     const Eigen::Vector2d& p = points[e.point];
     const Eigen::Vector2d q = catalog_.PointInSubmap(i, p, w->j);
-    Mark(i, e.point);
-    const bool objects = answers.Objects(q);
-    SetObjects(i, e.point, e.objects, objects);
-    const double margin = answers.Margin(q) - kSafety_m;
-    e.objects = objects;
-    e.ref_x_m = static_cast<float>(q.x());
-    e.ref_y_m = static_cast<float>(q.y());
-    e.ref_margin_m = static_cast<float>(margin);
-    e.key_m = static_cast<float>(margin - (RefOf(e) - w->sort_anchor * p).norm());
+    Reevaluate(i, *w, answers, p, q, &e);
   }
   // Unstored points were safe for 'slack' around their coverage position under
   // the old answers; near the change that no longer holds.

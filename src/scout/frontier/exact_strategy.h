@@ -66,6 +66,10 @@ class ExactStrategy : public UpdateStrategy {
   // Looks up point k of i in the watch's submap and stores an entry unless the
   // slack covers it.
   void AddEntry(int i, uint32_t k, Watch* watch, const AnswerMap& answers, double slack_m);
+  // Looks up point p (at q in the watch's submap) again and stores the result
+  // in 'entry', keyed against the watch's sort anchor.
+  void Reevaluate(int i, const Watch& watch, const AnswerMap& answers, const Eigen::Vector2d& p,
+                  const Eigen::Vector2d& q, Entry* entry);
   // After the watch's submap changed its answers inside 'region' (its frame):
   // re-checks every point whose recorded margin reaches into the region.
   void ReviewNearChange(int i, Watch* watch, const geometry::Box2d& region);

@@ -76,7 +76,6 @@ SubmapChange SubmapCatalog::Apply(const events::SubmapChanged& event) {
   record.answers = std::move(answers);
   record.grid = event.grid;
   record.local_pose = event.local_pose;
-  record.scan_origins = event.scan_origins;
   record.finished = event.finished;
 
   LocalFrontier frontier =

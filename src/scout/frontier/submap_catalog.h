@@ -26,7 +26,6 @@ struct SubmapRecord {
   LocalFrontier frontier;
   // Box of the frontier points in the submap frame (empty without points).
   geometry::Box2d local_points_box;
-  std::vector<Eigen::Vector2d> scan_origins;
   bool finished = false;
   // A cell centre of the submap's first grid: all later grids share its lattice.
   Eigen::Vector2d lattice_origin = Eigen::Vector2d::Zero();

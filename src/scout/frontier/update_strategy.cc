@@ -1,5 +1,7 @@
 #include "scout/frontier/update_strategy.h"
 
+#include <numeric>
+
 #include "scout/common/error.h"
 #include "scout/frontier/baseline_strategies.h"
 #include "scout/frontier/exact_strategy.h"
@@ -23,6 +25,16 @@ void UpdateStrategy::QuerySubmaps(const std::vector<int>& ids, bool use_hints, U
       cost->submap_ids.push_back(i);
     }
   }
+}
+
+UpdateCost UpdateStrategy::QueryAllSubmaps(bool use_hints) {
+  UpdateCost cost;
+  const Stopwatch stopwatch;
+  std::vector<int> all(catalog_.size());
+  std::iota(all.begin(), all.end(), 0);
+  QuerySubmaps(all, use_hints, &cost);
+  cost.time_us = stopwatch.ElapsedUs();
+  return cost;
 }
 
 std::vector<int> UpdateStrategy::RemapPoints(const SubmapChange& change) {

@@ -47,6 +47,8 @@ class UpdateStrategy {
   const std::vector<uint8_t>& answers(int i) const { return is_frontier_[i]; }
 
  protected:
+  // Re-queries every point of every submap and returns the cost.
+  UpdateCost QueryAllSubmaps(bool use_hints);
   // Re-queries every point of the given submaps; adds to 'cost'.
   void QuerySubmaps(const std::vector<int>& ids, bool use_hints, UpdateCost* cost);
   // Re-queries point 'k' of submap 'i'.
