@@ -26,8 +26,15 @@ double DistanceToSquare(const Eigen::Vector2d& q, const Eigen::Vector2d& lo,
 
 }  // namespace
 
-AnswerMap::AnswerMap(const std::vector<grid::CellState>& states, const grid::MapLimits& limits)
-    : limits_(limits), cells_(states.size(), 0) {
+AnswerMap::AnswerMap(const std::vector<grid::CellState>& states, const grid::MapLimits& limits,
+                     const Eigen::Vector2d& lattice_corner)
+    : limits_(limits),
+      lattice_corner_(lattice_corner),
+      lattice_offset_x_(static_cast<int>(
+          std::llround((limits.origin().x() - lattice_corner.x()) / limits.resolution()))),
+      lattice_offset_y_(static_cast<int>(
+          std::llround((limits.origin().y() - lattice_corner.y()) / limits.resolution()))),
+      cells_(states.size(), 0) {
   const std::vector<uint8_t> frontier = FrontierCellMask(states, limits);
   std::vector<uint8_t> objecting(states.size(), 0);
   std::vector<uint8_t> open(states.size(), 0);
@@ -58,7 +65,7 @@ AnswerMap::AnswerMap(const std::vector<grid::CellState>& states, const grid::Map
 }
 
 double AnswerMap::Margin(const Eigen::Vector2d& q) const {
-  const CellIndex c = limits_.CellContaining(q);
+  const CellIndex c = CellContaining(q);
   const double res = limits_.resolution();
   if (!limits_.Contains(c)) {
     // Outside, nothing objects: the nearest objecting cell lies inside, so a

@@ -2,6 +2,7 @@
 #define SCOUT_FRONTIER_ANSWER_MAP_H_
 
 #include <Eigen/Core>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -21,16 +22,26 @@ namespace scout::frontier {
 class AnswerMap {
  public:
   AnswerMap() = default;
-  // 'states' is row-major over 'limits'.
-  AnswerMap(const std::vector<grid::CellState>& states, const grid::MapLimits& limits);
+  // 'states' is row-major over 'limits'. 'lattice_corner' is a cell corner of
+  // the submap's fixed lattice (the origin of its first grid): positions are
+  // assigned to cells relative to it, so a position on a cell border lands in
+  // the same cell in every (grown) version of the grid.
+  AnswerMap(const std::vector<grid::CellState>& states, const grid::MapLimits& limits,
+            const Eigen::Vector2d& lattice_corner);
+  // The same, with the grid's own origin as the lattice corner.
+  AnswerMap(const std::vector<grid::CellState>& states, const grid::MapLimits& limits)
+      : AnswerMap(states, limits, limits.origin()) {}
 
   const grid::MapLimits& limits() const { return limits_; }
 
-  // Returns true if the submap objects at position 'q' (submap frame).
-  bool Objects(const Eigen::Vector2d& q) const {
-    const grid::CellIndex c = limits_.CellContaining(q);
-    return limits_.Contains(c) && (cells_[limits_.FlatIndex(c)] & kObjectsBit);
+  // Returns the cell of the grid containing position 'q' (it may lie outside).
+  grid::CellIndex CellContaining(const Eigen::Vector2d& q) const {
+    const double res = limits_.resolution();
+    return {static_cast<int>(std::floor((q.x() - lattice_corner_.x()) / res)) - lattice_offset_x_,
+            static_cast<int>(std::floor((q.y() - lattice_corner_.y()) / res)) - lattice_offset_y_};
   }
+  // Returns true if the submap objects at position 'q' (submap frame).
+  bool Objects(const Eigen::Vector2d& q) const { return ObjectsAtCell(CellContaining(q)); }
   bool ObjectsAtCell(const grid::CellIndex& c) const {
     return limits_.Contains(c) && (cells_[limits_.FlatIndex(c)] & kObjectsBit);
   }
@@ -52,6 +63,10 @@ class AnswerMap {
   double WindowMargin(const Eigen::Vector2d& q, const grid::CellIndex& c, bool objects) const;
 
   grid::MapLimits limits_;
+  Eigen::Vector2d lattice_corner_ = Eigen::Vector2d::Zero();
+  // Cell (0, 0) of the grid is lattice cell (offset_x, offset_y).
+  int lattice_offset_x_ = 0;
+  int lattice_offset_y_ = 0;
   std::vector<uint8_t> cells_;
   int64_t num_objecting_ = 0;
   // Smallest distance from any objecting cell's square to the grid border.

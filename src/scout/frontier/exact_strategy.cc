@@ -160,7 +160,10 @@ void ExactStrategy::ReviewNearChange(int i, Watch* w, const geometry::Box2d& reg
   std::vector<uint8_t> has_entry(points.size(), 0);
   for (Entry& e : w->entries) {
     has_entry[e.point] = 1;
-    if (region.DistanceTo(RefOf(e)) >= e.ref_margin_m) continue;
+    // The recorded answer holds at q_ref itself and within its margin; a
+    // margin of 0 (q_ref on a boundary) still needs q_ref outside the region.
+    const double to_region = region.DistanceTo(RefOf(e));
+    if (to_region > 0.0 && to_region >= e.ref_margin_m) continue;
     const Eigen::Vector2d& p = points[e.point];
     const Eigen::Vector2d q = catalog_.PointInSubmap(i, p, w->j);
     Reevaluate(i, *w, answers, p, q, &e);

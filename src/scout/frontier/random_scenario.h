@@ -41,20 +41,30 @@ class RandomScenario {
     }
   }
 
-  // True pose of submap 'id' (random position and heading inside the world).
-  geometry::Rigid2d TruePose() {
+  // True pose of a submap: random position and heading inside the world, or,
+  // with 'lattice_aligned', heading 0 and a position on multiples of half a
+  // cell, so other aligned submaps' points fall exactly on cell centres and
+  // borders (where margins are 0).
+  geometry::Rigid2d TruePose(bool lattice_aligned = false) {
     const double margin = o_.submap_size_m / 2;
-    return geometry::Rigid2d(Uniform(margin, o_.world_size_m - margin),
-                             Uniform(margin, o_.world_size_m - margin),
-                             Uniform(-std::numbers::pi, std::numbers::pi));
+    const double x = Uniform(margin, o_.world_size_m - margin);
+    const double y = Uniform(margin, o_.world_size_m - margin);
+    if (lattice_aligned) {
+      const double half = o_.resolution_m / 2;
+      return geometry::Rigid2d(std::round(x / half) * half, std::round(y / half) * half, 0.0);
+    }
+    return geometry::Rigid2d(x, y, Uniform(-std::numbers::pi, std::numbers::pi));
   }
 
   // A submap grid centred on its frame origin, sampled from the world at
-  // 'pose', seeing a disc of sensor_radius_m around the origin (plus the
-  // scan-origin list with that one origin).
-  events::SubmapChanged MakeSubmap(int id, const geometry::Rigid2d& pose, double radius_m) {
-    const int n = static_cast<int>(o_.submap_size_m / o_.resolution_m);
-    const Eigen::Vector2d origin(-o_.submap_size_m / 2, -o_.submap_size_m / 2);
+  // 'pose', seeing a disc of 'radius_m' around the origin (plus the
+  // scan-origin list with that one origin). 'grown_cells' enlarges the grid on
+  // every side by whole cells, as a growing submap grid does.
+  events::SubmapChanged MakeSubmap(int id, const geometry::Rigid2d& pose, double radius_m,
+                                   int grown_cells = 0) {
+    const int n = static_cast<int>(o_.submap_size_m / o_.resolution_m) + 2 * grown_cells;
+    const Eigen::Vector2d origin =
+        Eigen::Vector2d::Constant(-o_.submap_size_m / 2 - grown_cells * o_.resolution_m);
     auto grid =
         std::make_shared<grid::ProbabilityGrid>(grid::MapLimits(o_.resolution_m, origin, n, n));
     for (int y = 0; y < n; ++y) {

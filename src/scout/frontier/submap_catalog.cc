@@ -41,7 +41,9 @@ geometry::Box2d ChangedRegion(const AnswerMap& before, const AnswerMap& after) {
       }
     }
   }
-  return region;
+  // Cell lookups and this box compute cell borders in different ways; a point
+  // on a border must not fall outside the box by rounding.
+  return region.empty() ? region : region.Inflated(kBoxPadding_m);
 }
 
 }  // namespace
@@ -70,7 +72,8 @@ SubmapChange SubmapCatalog::Apply(const events::SubmapChanged& event) {
   SubmapRecord& record = submaps_[event.id];
   const std::vector<grid::CellState> states = event.grid->States();
   const grid::MapLimits& limits = event.grid->limits();
-  AnswerMap answers(states, limits);
+  if (change.is_new) record.lattice_corner = limits.origin();
+  AnswerMap answers(states, limits, record.lattice_corner);
   change.changed_region = ChangedRegion(record.answers, answers);
   change.previous_answers = std::move(record.answers);
   record.answers = std::move(answers);
@@ -80,26 +83,29 @@ SubmapChange SubmapCatalog::Apply(const events::SubmapChanged& event) {
 
   LocalFrontier frontier =
       ExtractReachableFrontier(states, limits, event.scan_origins, options_.inflation_radius_m);
-  // Points are cell centres: match old and new by their cell on the submap's
-  // lattice, fixed when the submap first appeared (a grown grid keeps the
-  // lattice but moves its origin by whole cells). Rounding offsets from a fixed
-  // lattice point is stable; flooring raw coordinates is not.
-  if (change.is_new) record.lattice_origin = limits.CellCenter({0, 0});
-  std::unordered_map<int64_t, int> old_index;
-  old_index.reserve(record.frontier.cells.size());
+  // A point is a cell of the submap's lattice, fixed when the submap first
+  // appeared (a grown grid keeps the lattice and moves its origin by whole
+  // cells). Its position is computed from that lattice index, so the same cell
+  // has bit-identical coordinates in every grid version: a surviving point then
+  // keeps its answer exactly, even when it lies on another submap's cell border.
   const double res = limits.resolution();
-  const auto key = [&](const Eigen::Vector2d& p) {
-    const Eigen::Vector2d cells = (p - record.lattice_origin) / res;
-    const int64_t kx = std::llround(cells.x());
-    const int64_t ky = std::llround(cells.y());
+  const auto lattice_key = [&](const Eigen::Vector2d& p, Eigen::Vector2d* snapped) {
+    const int64_t kx = std::llround((p.x() - record.lattice_corner.x()) / res - 0.5);
+    const int64_t ky = std::llround((p.y() - record.lattice_corner.y()) / res - 0.5);
+    if (snapped != nullptr) {
+      *snapped = record.lattice_corner + Eigen::Vector2d((static_cast<double>(kx) + 0.5) * res,
+                                                         (static_cast<double>(ky) + 0.5) * res);
+    }
     return (kx << 32) ^ (ky & 0xffffffff);
   };
+  std::unordered_map<int64_t, int> old_index;
+  old_index.reserve(record.frontier.points_m.size());
   for (size_t k = 0; k < record.frontier.points_m.size(); ++k) {
-    old_index.emplace(key(record.frontier.points_m[k]), static_cast<int>(k));
+    old_index.emplace(lattice_key(record.frontier.points_m[k], nullptr), static_cast<int>(k));
   }
   change.previous_index.resize(frontier.points_m.size());
   for (size_t k = 0; k < frontier.points_m.size(); ++k) {
-    const auto it = old_index.find(key(frontier.points_m[k]));
+    const auto it = old_index.find(lattice_key(frontier.points_m[k], &frontier.points_m[k]));
     change.previous_index[k] = it == old_index.end() ? -1 : it->second;
   }
   record.frontier = std::move(frontier);

@@ -27,8 +27,9 @@ struct SubmapRecord {
   // Box of the frontier points in the submap frame (empty without points).
   geometry::Box2d local_points_box;
   bool finished = false;
-  // A cell centre of the submap's first grid: all later grids share its lattice.
-  Eigen::Vector2d lattice_origin = Eigen::Vector2d::Zero();
+  // The origin (a cell corner) of the submap's first grid: all later grids
+  // share its lattice of cells.
+  Eigen::Vector2d lattice_corner = Eigen::Vector2d::Zero();
 };
 
 // What applying one SubmapChanged did.
