@@ -16,9 +16,12 @@ class Rigid2d {
  public:
   Rigid2d() = default;
   Rigid2d(double x_m, double y_m, double theta_rad)
-      : translation_(x_m, y_m), theta_(NormalizeAngle(theta_rad)) {}
+      : Rigid2d(Eigen::Vector2d(x_m, y_m), theta_rad) {}
   Rigid2d(const Eigen::Vector2d& translation, double theta_rad)
-      : translation_(translation), theta_(NormalizeAngle(theta_rad)) {}
+      : translation_(translation),
+        theta_(NormalizeAngle(theta_rad)),
+        cos_(std::cos(theta_)),
+        sin_(std::sin(theta_)) {}
 
   static Rigid2d Identity() { return Rigid2d(); }
 
@@ -30,8 +33,7 @@ class Rigid2d {
 
   // Returns the rotated-only image of 'v' (no translation).
   Eigen::Vector2d Rotate(const Eigen::Vector2d& v) const {
-    const double c = std::cos(theta_), s = std::sin(theta_);
-    return {c * v.x() - s * v.y(), s * v.x() + c * v.y()};
+    return {cos_ * v.x() - sin_ * v.y(), sin_ * v.x() + cos_ * v.y()};
   }
 
   // Returns T * p.
@@ -51,6 +53,10 @@ class Rigid2d {
  private:
   Eigen::Vector2d translation_ = Eigen::Vector2d::Zero();
   double theta_ = 0.0;
+  // cos and sin of theta_, computed once: transforms are applied to millions
+  // of points per optimisation round.
+  double cos_ = 1.0;
+  double sin_ = 0.0;
 };
 
 std::ostream& operator<<(std::ostream& os, const Rigid2d& t);
