@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -60,26 +61,37 @@ std::vector<float> SquaredDistanceToNearestSite(const std::vector<uint8_t>& is_s
                                 std::to_string(width) + " x " + std::to_string(height));
   }
   const size_t num_cells = is_site.size();
-  std::vector<double> along_x(num_cells);
-  const int n_max = std::max(width, height);
-  std::vector<double> f(n_max), d(n_max), z(n_max + 1);
-  std::vector<int> v(n_max);
-
-  // Pass 1, along each row: squared distance to the nearest site in the same row.
+  // Pass 1, along each column: distance in cells to the nearest site in the
+  // same column, by one downward and one upward sweep over whole rows, so both
+  // sweeps read memory contiguously (Meijster et al.'s first phase).
+  constexpr int32_t kNone = std::numeric_limits<int32_t>::max();
+  std::vector<int32_t> along_y(num_cells);
   for (int y = 0; y < height; ++y) {
     const size_t row = static_cast<size_t>(y) * width;
-    for (int x = 0; x < width; ++x) f[x] = is_site[row + x] ? 0.0 : kInfinity;
-    DistanceTransform1d(f, width, &d, &v, &z);
-    for (int x = 0; x < width; ++x) along_x[row + x] = d[x];
-  }
-  // Pass 2, along each column over the row results: dx^2 + dy^2 minimised.
-  std::vector<float> result(num_cells);
-  for (int x = 0; x < width; ++x) {
-    for (int y = 0; y < height; ++y) f[y] = along_x[static_cast<size_t>(y) * width + x];
-    DistanceTransform1d(f, height, &d, &v, &z);
-    for (int y = 0; y < height; ++y) {
-      result[static_cast<size_t>(y) * width + x] = static_cast<float>(d[y]);
+    for (int x = 0; x < width; ++x) {
+      const int32_t above = y > 0 ? along_y[row - width + x] : kNone;
+      along_y[row + x] = is_site[row + x] ? 0 : (above == kNone ? kNone : above + 1);
     }
+  }
+  for (int y = height - 2; y >= 0; --y) {
+    const size_t row = static_cast<size_t>(y) * width;
+    for (int x = 0; x < width; ++x) {
+      const int32_t below = along_y[row + width + x];
+      if (below != kNone && below + 1 < along_y[row + x]) along_y[row + x] = below + 1;
+    }
+  }
+  // Pass 2, along each row over the column results: dx^2 + dy^2 minimised.
+  std::vector<double> f(width), d(width), z(width + 1);
+  std::vector<int> v(width);
+  std::vector<float> result(num_cells);
+  for (int y = 0; y < height; ++y) {
+    const size_t row = static_cast<size_t>(y) * width;
+    for (int x = 0; x < width; ++x) {
+      const int32_t dy = along_y[row + x];
+      f[x] = dy == kNone ? kInfinity : static_cast<double>(dy) * dy;
+    }
+    DistanceTransform1d(f, width, &d, &v, &z);
+    for (int x = 0; x < width; ++x) result[row + x] = static_cast<float>(d[x]);
   }
   return result;
 }
