@@ -185,21 +185,27 @@ void ExactStrategy::UpdateWatchesOf(int i) {
   std::erase_if(watches, [&](Watch& w) {
     if (catalog_.submap(w.j).global_box.Intersects(points_box)) return false;
     for (const Entry& e : w.entries) SetObjects(i, e.point, e.objects, false);
+    std::erase(watchers_[w.j], i);
     return true;
   });
   for (Watch& w : watches) Refresh(i, &w);
   if (catalog_.submap(i).frontier.points_m.empty()) return;
   for (const int j : catalog_.index().Intersecting(points_box)) {
-    if (j == i || FindWatch(i, j) != nullptr) continue;
-    watches.push_back(Watch{});
-    watches.back().j = j;
-    Anchor(i, &watches.back());
+    if (j != i && FindWatch(i, j) == nullptr) AddWatch(i, j);
   }
+}
+
+void ExactStrategy::AddWatch(int i, int j) {
+  watches_[i].push_back(Watch{});
+  watches_[i].back().j = j;
+  watchers_[j].push_back(i);
+  Anchor(i, &watches_[i].back());
 }
 
 void ExactStrategy::EnsureSize(int n) {
   while (static_cast<int>(watches_.size()) < n) {
     watches_.emplace_back();
+    watchers_.emplace_back();
     objectors_.emplace_back();
     point_stamp_.emplace_back();
     submap_stamp_.push_back(0);
@@ -266,17 +272,15 @@ UpdateCost ExactStrategy::OnSubmapChanged(const SubmapChange& change) {
   UpdateWatchesOf(j);
   // Other submaps' watches on j: j's answers changed inside the changed region.
   if (!change.changed_region.empty()) {
-    for (int i = 0; i < catalog_.size(); ++i) {
-      if (i == j) continue;
-      Watch* w = FindWatch(i, j);
-      if (w != nullptr) {
-        ReviewNearChange(i, w, change.changed_region);
-      } else if (!catalog_.submap(i).frontier.points_m.empty() &&
-                 catalog_.GlobalPointsBox(i).Intersects(catalog_.submap(j).global_box)) {
-        watches_[i].push_back(Watch{});
-        watches_[i].back().j = j;
-        Anchor(i, &watches_[i].back());
+    for (const int i : watchers_[j]) ReviewNearChange(i, FindWatch(i, j), change.changed_region);
+    // Submaps whose points j's (grown) grid reaches for the first time.
+    const geometry::Box2d& box = catalog_.submap(j).global_box;
+    for (const int i : catalog_.index().Intersecting(box)) {
+      if (i == j || catalog_.submap(i).frontier.points_m.empty() || FindWatch(i, j) != nullptr ||
+          !catalog_.GlobalPointsBox(i).Intersects(box)) {
+        continue;
       }
+      AddWatch(i, j);
     }
   }
   return EndUpdate(stopwatch.ElapsedUs());

@@ -77,6 +77,8 @@ class ExactStrategy : public UpdateStrategy {
   // Recomputes the sort keys for the current relative pose (no lookups).
   void Rekey(int i, Watch* watch);
   Watch* FindWatch(int i, int j);
+  // Creates and anchors the watch of submap i's points on submap j.
+  void AddWatch(int i, int j);
   // Creates watches for every submap whose box meets i's points and refreshes
   // the existing ones.
   void UpdateWatchesOf(int i);
@@ -85,7 +87,8 @@ class ExactStrategy : public UpdateStrategy {
   void BeginUpdate();
   UpdateCost EndUpdate(double time_us);
 
-  std::vector<std::vector<Watch>> watches_;       // by submap i
+  std::vector<std::vector<Watch>> watches_;       // by submap i (whose points are watched)
+  std::vector<std::vector<int>> watchers_;        // by submap j: every i with a watch on j
   std::vector<std::vector<uint16_t>> objectors_;  // per point: watches that object
   // Distinct points / submaps touched in the current update.
   std::vector<std::vector<uint32_t>> point_stamp_;
