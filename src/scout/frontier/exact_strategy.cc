@@ -228,16 +228,10 @@ UpdateCost ExactStrategy::OnOptimized(const std::vector<geometry::Rigid2d>&) {
   return EndUpdate(stopwatch.ElapsedUs());
 }
 
-UpdateCost ExactStrategy::OnSubmapChanged(const SubmapChange& change) {
-  const Stopwatch stopwatch;
-  BeginUpdate();
+void ExactStrategy::RemapOwnWatches(const SubmapChange& change) {
   const int j = change.id;
-  EnsureSize(catalog_.size());
-  RemapPoints(change);  // sizes is_frontier_ / hint_; answers are rebuilt below
   const size_t n = change.previous_index.size();
   point_stamp_[j].assign(n, 0);
-  // The changed submap's own points: keep the entries of surviving points
-  // (the other submaps did not change), drop vanished ones, add new ones.
   objectors_[j].assign(n, 0);
   std::vector<int> new_index_of_old;
   for (size_t k = 0; k < n; ++k) {
@@ -269,6 +263,15 @@ UpdateCost ExactStrategy::OnSubmapChanged(const SubmapChange& change) {
     std::sort(w.entries.begin(), w.entries.end(), ByKey<Entry, Entry>);
   }
   for (size_t k = 0; k < n; ++k) is_frontier_[j][k] = objectors_[j][k] == 0;
+}
+
+UpdateCost ExactStrategy::OnSubmapChanged(const SubmapChange& change) {
+  const Stopwatch stopwatch;
+  BeginUpdate();
+  const int j = change.id;
+  EnsureSize(catalog_.size());
+  RemapPoints(change);  // sizes is_frontier_ / hint_; answers are rebuilt below
+  RemapOwnWatches(change);
   UpdateWatchesOf(j);
   // Other submaps' watches on j: j's answers changed inside the changed region.
   if (!change.changed_region.empty()) {

@@ -77,6 +77,10 @@ class ExactStrategy : public UpdateStrategy {
   // Recomputes the sort keys for the current relative pose (no lookups).
   void Rekey(int i, Watch* watch);
   Watch* FindWatch(int i, int j);
+  // After a grid change of 'change.id': keeps the entries of its surviving
+  // points (the other submaps did not change), drops vanished points and looks
+  // up new ones, in every watch of its points.
+  void RemapOwnWatches(const SubmapChange& change);
   // Creates and anchors the watch of submap i's points on submap j.
   void AddWatch(int i, int j);
   // Creates watches for every submap whose box meets i's points and refreshes
