@@ -190,9 +190,14 @@ void ExactStrategy::UpdateWatchesOf(int i) {
   });
   for (Watch& w : watches) Refresh(i, &w);
   if (catalog_.submap(i).frontier.points_m.empty()) return;
+  // Marks the watched submaps so each candidate is checked in O(1).
+  watched_.resize(catalog_.size(), 0);
+  for (const Watch& w : watches) watched_[w.j] = 1;
+  const size_t existing = watches.size();
   for (const int j : catalog_.index().Intersecting(points_box)) {
-    if (j != i && FindWatch(i, j) == nullptr) AddWatch(i, j);
+    if (j != i && !watched_[j]) AddWatch(i, j);
   }
+  for (size_t k = 0; k < existing; ++k) watched_[watches_[i][k].j] = 0;
 }
 
 void ExactStrategy::AddWatch(int i, int j) {

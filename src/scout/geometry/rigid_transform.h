@@ -41,16 +41,24 @@ class Rigid2d {
 
   // Returns the composition this * other (apply 'other' first).
   Rigid2d operator*(const Rigid2d& other) const {
-    return Rigid2d(Rotate(other.translation_) + translation_, theta_ + other.theta_);
+    // Angle addition instead of cos/sin of the summed angle: no trigonometry.
+    return Rigid2d(Rotate(other.translation_) + translation_, NormalizeAngle(theta_ + other.theta_),
+                   cos_ * other.cos_ - sin_ * other.sin_, sin_ * other.cos_ + cos_ * other.sin_);
   }
 
   // Returns T^-1.
   Rigid2d inverse() const {
-    const Rigid2d rotation_only(Eigen::Vector2d::Zero(), -theta_);
-    return Rigid2d(-rotation_only.Rotate(translation_), -theta_);
+    const Eigen::Vector2d back(cos_ * translation_.x() + sin_ * translation_.y(),
+                               -sin_ * translation_.x() + cos_ * translation_.y());
+    return Rigid2d(-back, NormalizeAngle(-theta_), cos_, -sin_);
   }
 
  private:
+  // For results whose cos/sin follow from their operands'.
+  Rigid2d(const Eigen::Vector2d& translation, double normalized_theta_rad, double cos_theta,
+          double sin_theta)
+      : translation_(translation), theta_(normalized_theta_rad), cos_(cos_theta), sin_(sin_theta) {}
+
   Eigen::Vector2d translation_ = Eigen::Vector2d::Zero();
   double theta_ = 0.0;
   // cos and sin of theta_, computed once: transforms are applied to millions
