@@ -52,14 +52,26 @@ int64_t NearestOpenCell(const std::vector<CellState>& states, const std::vector<
 
 std::vector<uint8_t> FrontierCellMask(const std::vector<CellState>& states,
                                       const grid::MapLimits& limits) {
+  const int width = limits.width(), height = limits.height();
+  // Unknown cells, padded by one unknown cell on every side (outside is unknown).
+  const int pw = width + 2;
+  std::vector<uint8_t> unknown(static_cast<size_t>(pw) * (height + 2), 1);
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      unknown[static_cast<size_t>(y + 1) * pw + x + 1] =
+          states[static_cast<size_t>(y) * width + x] == CellState::kUnknown;
+    }
+  }
   std::vector<uint8_t> mask(states.size(), 0);
-  for (int y = 0; y < limits.height(); ++y) {
-    for (int x = 0; x < limits.width(); ++x) {
-      const CellIndex c{x, y};
-      const int64_t flat = limits.FlatIndex(c);
-      if (states[flat] == CellState::kFree && HasUnknownNeighbour(states, limits, c)) {
-        mask[flat] = 1;
-      }
+  for (int y = 0; y < height; ++y) {
+    const uint8_t* up = &unknown[static_cast<size_t>(y + 2) * pw + 1];
+    const uint8_t* mid = &unknown[static_cast<size_t>(y + 1) * pw + 1];
+    const uint8_t* down = &unknown[static_cast<size_t>(y) * pw + 1];
+    for (int x = 0; x < width; ++x) {
+      const size_t i = static_cast<size_t>(y) * width + x;
+      if (states[i] != CellState::kFree) continue;
+      mask[i] = (up[x - 1] | up[x] | up[x + 1] | mid[x - 1] | mid[x + 1] | down[x - 1] | down[x] |
+                 down[x + 1]) != 0;
     }
   }
   return mask;
