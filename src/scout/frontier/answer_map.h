@@ -34,6 +34,8 @@ class AnswerMap {
 
   const grid::MapLimits& limits() const { return limits_; }
 
+  // Returns the lattice index of the grid's cell (0, 0).
+  grid::CellIndex lattice_offset() const { return {lattice_offset_x_, lattice_offset_y_}; }
   // Returns the cell of the grid containing position 'q' (it may lie outside).
   grid::CellIndex CellContaining(const Eigen::Vector2d& q) const {
     const double res = limits_.resolution();

@@ -91,9 +91,9 @@ class ExactStrategy : public UpdateStrategy {
   void BeginUpdate();
   UpdateCost EndUpdate(double time_us);
 
-  std::vector<std::vector<Watch>> watches_;  // by submap i (whose points are watched)
-  std::vector<std::vector<int>> watchers_;   // by submap j: every i with a watch on j
-  std::vector<uint8_t> watched_;  // scratch of UpdateWatchesOf, all 0 between calls
+  std::vector<std::vector<Watch>> watches_;       // by submap i (whose points are watched)
+  std::vector<std::vector<int>> watchers_;        // by submap j: every i with a watch on j
+  std::vector<uint8_t> watched_;                  // scratch of UpdateWatchesOf, all 0 between calls
   std::vector<std::vector<uint16_t>> objectors_;  // per point: watches that object
   // Distinct points / submaps touched in the current update.
   std::vector<std::vector<uint32_t>> point_stamp_;

@@ -1,6 +1,7 @@
 #include "scout/frontier/submap_catalog.h"
 
 #include <cmath>
+#include <limits>
 #include <string>
 #include <unordered_map>
 
@@ -16,34 +17,41 @@ constexpr double kBoxPadding_m = 1e-6;
 // Returns the box (submap frame) of the cells whose answer differs between
 // 'before' and 'after'; cells outside a grid do not object.
 geometry::Box2d ChangedRegion(const AnswerMap& before, const AnswerMap& after) {
-  geometry::Box2d region;
+  // Both maps sit on the submap's lattice: cell (x, y) of 'after' is cell
+  // (x, y) + shift of 'before' (an empty 'before' has no cells and never objects).
+  const grid::CellIndex shift{after.lattice_offset().x - before.lattice_offset().x,
+                              after.lattice_offset().y - before.lattice_offset().y};
+  int min_x = std::numeric_limits<int>::max(), min_y = min_x;
+  int max_x = std::numeric_limits<int>::min(), max_y = max_x;
+  const auto mark = [&](int x, int y) {
+    min_x = std::min(min_x, x), max_x = std::max(max_x, x);
+    min_y = std::min(min_y, y), max_y = std::max(max_y, y);
+  };
   const grid::MapLimits& limits = after.limits();
-  const double half = 0.5 * limits.resolution();
   for (int y = 0; y < limits.height(); ++y) {
     for (int x = 0; x < limits.width(); ++x) {
-      const grid::CellIndex c{x, y};
-      const Eigen::Vector2d centre = limits.CellCenter(c);
-      if (after.ObjectsAtCell(c) != before.Objects(centre)) {
-        region.Extend(centre.array() - half);
-        region.Extend(centre.array() + half);
+      if (after.ObjectsAtCell({x, y}) != before.ObjectsAtCell({x + shift.x, y + shift.y})) {
+        mark(x, y);
       }
     }
   }
-  // Cells of the old grid that fall outside the new one (grids only grow, but
-  // a producer may shrink them) lose their objection.
+  // Cells of the old grid outside the new one (grids only grow, but a producer
+  // may shrink them) lose their objection.
   const grid::MapLimits& old_limits = before.limits();
   for (int y = 0; y < old_limits.height(); ++y) {
     for (int x = 0; x < old_limits.width(); ++x) {
-      const Eigen::Vector2d centre = old_limits.CellCenter({x, y});
-      if (!limits.Contains(limits.CellContaining(centre)) && before.ObjectsAtCell({x, y})) {
-        region.Extend(centre.array() - half);
-        region.Extend(centre.array() + half);
+      if (before.ObjectsAtCell({x, y}) && !limits.Contains({x - shift.x, y - shift.y})) {
+        mark(x - shift.x, y - shift.y);
       }
     }
   }
+  if (min_x > max_x) return geometry::Box2d();
+  const double res = limits.resolution();
+  const Eigen::Vector2d lo = limits.CellCenter({min_x, min_y}).array() - 0.5 * res;
+  const Eigen::Vector2d hi = limits.CellCenter({max_x, max_y}).array() + 0.5 * res;
   // Cell lookups and this box compute cell borders in different ways; a point
   // on a border must not fall outside the box by rounding.
-  return region.empty() ? region : region.Inflated(kBoxPadding_m);
+  return geometry::Box2d(lo, hi).Inflated(kBoxPadding_m);
 }
 
 }  // namespace
