@@ -77,7 +77,7 @@ void ExactStrategy::Anchor(int i, Watch* w) {
   std::sort(w->entries.begin(), w->entries.end(), ByKey<Entry, Entry>);
 }
 
-void ExactStrategy::AddEntry(int i, uint32_t k, Watch* w, const AnswerMap& answers,
+bool ExactStrategy::AddEntry(int i, uint32_t k, Watch* w, const AnswerMap& answers,
                              double slack_m) {
   const Eigen::Vector2d& p = catalog_.submap(i).frontier.points_m[k];
   const Eigen::Vector2d q = catalog_.PointInSubmap(i, p, w->j);
@@ -86,16 +86,18 @@ void ExactStrategy::AddEntry(int i, uint32_t k, Watch* w, const AnswerMap& answe
   const double margin = answers.Margin(q) - kSafety_m;
   // Not stored: it keeps its answer while no point moves by 'slack' from the
   // coverage anchor (checked per pair).
-  if (!objects && margin >= slack_m + (q - w->coverage_anchor * p).norm()) return;
+  if (!objects && margin >= slack_m + (q - w->coverage_anchor * p).norm()) return false;
   Entry e;
   e.ref_x_m = static_cast<float>(q.x());
   e.ref_y_m = static_cast<float>(q.y());
-  e.ref_margin_m = static_cast<float>(margin);
-  e.key_m = static_cast<float>(margin - (RefOf(e) - w->sort_anchor * p).norm());
+  const double stored = std::min(margin, MarginCap());
+  e.ref_margin_m = static_cast<float>(stored);
+  e.key_m = static_cast<float>(stored - (RefOf(e) - w->sort_anchor * p).norm());
   e.point = k;
   e.objects = objects;
   w->entries.push_back(e);
   SetObjects(i, k, false, objects);
+  return true;
 }
 
 void ExactStrategy::Reevaluate(int i, const Watch& w, const AnswerMap& answers,
@@ -103,7 +105,7 @@ void ExactStrategy::Reevaluate(int i, const Watch& w, const AnswerMap& answers,
   Mark(i, e->point);
   const bool objects = answers.Objects(q);
   SetObjects(i, e->point, e->objects, objects);
-  const double margin = answers.Margin(q) - kSafety_m;
+  const double margin = std::min(answers.Margin(q) - kSafety_m, MarginCap());
   e->objects = objects;
   e->ref_x_m = static_cast<float>(q.x());
   e->ref_y_m = static_cast<float>(q.y());
@@ -154,10 +156,15 @@ void ExactStrategy::Refresh(int i, Watch* w) {
 }
 
 void ExactStrategy::ReviewNearChange(int i, Watch* w, const geometry::Box2d& region) {
+  const double slack = catalog_.options().exact_slack_m;
+  // Every recorded position lies within the coverage disc grown by the slack
+  // (refs are positions looked up since anchoring), and no stored margin
+  // exceeds the cap: a region farther than that touches nothing.
+  if (region.DistanceTo(w->center) >= w->radius_m + slack + std::max(slack, MarginCap())) return;
   const std::vector<Eigen::Vector2d>& points = catalog_.submap(i).frontier.points_m;
   const AnswerMap& answers = catalog_.submap(w->j).answers;
-  const double slack = catalog_.options().exact_slack_m;
   std::vector<uint8_t> has_entry(points.size(), 0);
+  bool changed = false;
   for (Entry& e : w->entries) {
     has_entry[e.point] = 1;
     // The recorded answer holds at q_ref itself and within its margin; a
@@ -165,17 +172,17 @@ void ExactStrategy::ReviewNearChange(int i, Watch* w, const geometry::Box2d& reg
     const double to_region = region.DistanceTo(RefOf(e));
     if (to_region > 0.0 && to_region >= e.ref_margin_m) continue;
     const Eigen::Vector2d& p = points[e.point];
-    const Eigen::Vector2d q = catalog_.PointInSubmap(i, p, w->j);
-    Reevaluate(i, *w, answers, p, q, &e);
+    Reevaluate(i, *w, answers, p, catalog_.PointInSubmap(i, p, w->j), &e);
+    changed = true;
   }
   // Unstored points were safe for 'slack' around their coverage position under
   // the old answers; near the change that no longer holds.
   for (uint32_t k = 0; k < points.size(); ++k) {
     if (has_entry[k]) continue;
     if (region.DistanceTo(w->coverage_anchor * points[k]) >= slack + kSafety_m) continue;
-    AddEntry(i, k, w, answers, slack);
+    changed |= AddEntry(i, k, w, answers, slack);
   }
-  std::sort(w->entries.begin(), w->entries.end(), ByKey<Entry, Entry>);
+  if (changed) std::sort(w->entries.begin(), w->entries.end(), ByKey<Entry, Entry>);
 }
 
 void ExactStrategy::UpdateWatchesOf(int i) {
@@ -256,7 +263,8 @@ void ExactStrategy::RemapOwnWatches(const SubmapChange& change) {
       kept.push_back(e);
       if (e.objects) ++objectors_[j][k];
     }
-    w.entries = std::move(kept);
+    w.entries = std::move(kept);  // still sorted: filtering keeps the order
+    const size_t sorted = w.entries.size();
     const AnswerMap& answers = catalog_.submap(w.j).answers;
     for (size_t k = 0; k < n; ++k) {
       if (change.previous_index[k] >= 0) continue;
@@ -265,7 +273,9 @@ void ExactStrategy::RemapOwnWatches(const SubmapChange& change) {
           std::max(w.radius_m, (w.coverage_anchor * points[k] - w.center).norm() + kSafety_m);
       AddEntry(j, static_cast<uint32_t>(k), &w, answers, slack);
     }
-    std::sort(w.entries.begin(), w.entries.end(), ByKey<Entry, Entry>);
+    const auto middle = w.entries.begin() + static_cast<std::ptrdiff_t>(sorted);
+    std::sort(middle, w.entries.end(), ByKey<Entry, Entry>);
+    std::inplace_merge(w.entries.begin(), middle, w.entries.end(), ByKey<Entry, Entry>);
   }
   for (size_t k = 0; k < n; ++k) is_frontier_[j][k] = objectors_[j][k] == 0;
 }

@@ -65,7 +65,11 @@ class ExactStrategy : public UpdateStrategy {
   void Refresh(int i, Watch* watch);
   // Looks up point k of i in the watch's submap and stores an entry unless the
   // slack covers it.
-  void AddEntry(int i, uint32_t k, Watch* watch, const AnswerMap& answers, double slack_m);
+  // Returns true if it stored one.
+  bool AddEntry(int i, uint32_t k, Watch* watch, const AnswerMap& answers, double slack_m);
+  // Stored margins are capped (a smaller margin is always safe), which bounds
+  // how far from a grid change a watch can be affected.
+  double MarginCap() const { return 2.0 * catalog_.options().exact_slack_m; }
   // Looks up point p (at q in the watch's submap) again and stores the result
   // in 'entry', keyed against the watch's sort anchor.
   void Reevaluate(int i, const Watch& watch, const AnswerMap& answers, const Eigen::Vector2d& p,
