@@ -64,6 +64,8 @@ void ExactStrategy::Anchor(int i, Watch* w) {
   w->entries.clear();
   const geometry::Rigid2d rel = Relative(i, w->j);
   w->coverage_anchor = w->sort_anchor = rel;
+  w->seen_version_i = catalog_.submap(i).pose_version;
+  w->seen_version_j = catalog_.submap(w->j).pose_version;
   Eigen::Vector2d sum = Eigen::Vector2d::Zero();
   for (const Eigen::Vector2d& p : points) sum += rel * p;
   w->center = points.empty() ? sum : Eigen::Vector2d(sum / static_cast<double>(points.size()));
@@ -125,6 +127,11 @@ void ExactStrategy::Rekey(int i, Watch* w) {
 }
 
 void ExactStrategy::Refresh(int i, Watch* w) {
+  const uint64_t version_i = catalog_.submap(i).pose_version;
+  const uint64_t version_j = catalog_.submap(w->j).pose_version;
+  if (w->seen_version_i == version_i && w->seen_version_j == version_j) return;
+  w->seen_version_i = version_i;
+  w->seen_version_j = version_j;
   const geometry::Rigid2d rel = Relative(i, w->j);
   const double slack = catalog_.options().exact_slack_m;
   if (geometry::MaxDisplacementWithin(rel * w->coverage_anchor.inverse(), w->center, w->radius_m) >=

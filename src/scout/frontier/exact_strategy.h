@@ -56,6 +56,10 @@ class ExactStrategy : public UpdateStrategy {
     Eigen::Vector2d sort_center = Eigen::Vector2d::Zero();  // the same disc under sort_anchor
     double radius_m = 0.0;
     std::vector<Entry> entries;  // ascending key_m
+    // Pose versions of i and j when the watch was last brought up to date:
+    // while neither submap moves, the watch needs no work.
+    uint64_t seen_version_i = 0;
+    uint64_t seen_version_j = 0;
   };
 
   geometry::Rigid2d Relative(int i, int j) const;

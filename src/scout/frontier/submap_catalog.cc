@@ -162,12 +162,20 @@ int64_t SubmapCatalog::total_points() const {
 
 void SubmapCatalog::SetGlobalPose(int id, const geometry::Rigid2d& pose) {
   SubmapRecord& r = submaps_[id];
-  r.global_pose = pose;
-  r.global_pose_inverse = pose.inverse();
-  r.global_box =
+  if (r.pose_version == 0 || pose.x() != r.global_pose.x() || pose.y() != r.global_pose.y() ||
+      pose.theta() != r.global_pose.theta()) {
+    ++r.pose_version;
+    r.global_pose = pose;
+    r.global_pose_inverse = pose.inverse();
+  }
+  const geometry::Box2d box =
       r.grid ? geometry::TransformBox(pose, r.grid->limits().Bounds()).Inflated(kBoxPadding_m)
              : geometry::Box2d();
-  index_.Set(id, r.global_box);
+  // Most submaps do not move in a solve: keep the R-tree as it is for them.
+  if (box.min != r.global_box.min || box.max != r.global_box.max) {
+    r.global_box = box;
+    index_.Set(id, r.global_box);
+  }
 }
 
 }  // namespace scout::frontier

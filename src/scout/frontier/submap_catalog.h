@@ -21,6 +21,8 @@ struct SubmapRecord {
   geometry::Rigid2d local_pose;
   geometry::Rigid2d global_pose;
   geometry::Rigid2d global_pose_inverse;
+  // Incremented whenever global_pose changes (0 before it is first set).
+  uint64_t pose_version = 0;
   // Global box of the grid (slightly inflated so rounding never drops a cell).
   geometry::Box2d global_box;
   LocalFrontier frontier;
