@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "scout/frontier/local_frontiers.h"
+#include "scout/grid/distance_transform.h"
 
 namespace scout::frontier {
 namespace {
@@ -21,59 +22,6 @@ double DistanceToSquare(const Eigen::Vector2d& q, const Eigen::Vector2d& lo,
   const double dx = std::max({lo.x() - q.x(), 0.0, q.x() - hi.x()});
   const double dy = std::max({lo.y() - q.y(), 0.0, q.y() - hi.y()});
   return std::hypot(dx, dy);
-}
-
-// Bounds the ratio of the (1, sqrt 2) chamfer distance to the Euclidean one:
-// for an offset (dx, dy), dx >= dy, it is (dx + (sqrt 2 - 1) dy) / |(dx, dy)|,
-// at most 1.0824 (at dy / dx = sqrt 2 - 1); a little more absorbs float sums.
-constexpr double kChamferExcess = 1.0825;
-
-// Returns, per cell, the (1, sqrt 2) chamfer distance in cells to the nearest
-// cell of the other class ('objecting' or not), +inf when there is none: two
-// raster passes over two channels. Cheaper than two exact transforms, and a
-// lower bound of the Euclidean distance after dividing by kChamferExcess, which
-// is all a conservative margin needs.
-std::vector<float> ChamferToOtherAnswer(const std::vector<uint8_t>& objecting, int width,
-                                        int height) {
-  constexpr float kInf = std::numeric_limits<float>::infinity();
-  constexpr float kDiagonal = 1.41421356f;
-  // Padded by one cell of +inf on every side, so the passes need no bounds checks.
-  const int pw = width + 2;
-  const size_t padded = static_cast<size_t>(pw) * (height + 2);
-  std::vector<float> to_objecting(padded, kInf), to_open(padded, kInf);
-  for (int y = 0; y < height; ++y) {
-    for (int x = 0; x < width; ++x) {
-      const size_t p = static_cast<size_t>(y + 1) * pw + x + 1;
-      (objecting[static_cast<size_t>(y) * width + x] ? to_objecting : to_open)[p] = 0.f;
-    }
-  }
-  for (float* d : {to_objecting.data(), to_open.data()}) {
-    for (int y = 1; y <= height; ++y) {
-      float* row = d + static_cast<size_t>(y) * pw;
-      const float* up = row - pw;
-      for (int x = 1; x <= width; ++x) {
-        row[x] = std::min(
-            {row[x], row[x - 1] + 1.f, up[x] + 1.f, up[x - 1] + kDiagonal, up[x + 1] + kDiagonal});
-      }
-    }
-    for (int y = height; y >= 1; --y) {
-      float* row = d + static_cast<size_t>(y) * pw;
-      const float* down = row + pw;
-      for (int x = width; x >= 1; --x) {
-        row[x] = std::min({row[x], row[x + 1] + 1.f, down[x] + 1.f, down[x + 1] + kDiagonal,
-                           down[x - 1] + kDiagonal});
-      }
-    }
-  }
-  std::vector<float> to_other(objecting.size());
-  for (int y = 0; y < height; ++y) {
-    for (int x = 0; x < width; ++x) {
-      const size_t i = static_cast<size_t>(y) * width + x;
-      const size_t p = static_cast<size_t>(y + 1) * pw + x + 1;
-      to_other[i] = objecting[i] ? to_open[p] : to_objecting[p];
-    }
-  }
-  return to_other;
 }
 
 }  // namespace
@@ -101,11 +49,25 @@ AnswerMap::AnswerMap(const std::vector<grid::CellState>& states, const grid::Map
       objecting_to_border_m_ = std::min(objecting_to_border_m_, to_border * limits.resolution());
     }
   }
-  // Each cell's distance to the nearest cell with the other answer.
-  const std::vector<float> to_other =
-      ChamferToOtherAnswer(objecting, limits.width(), limits.height());
+  // Each cell's distance to the nearest cell with the other answer, bounded
+  // from below by one transform: the nearest cell of the other answer always
+  // has a 4-neighbour that is not of its answer (the neighbour one step towards
+  // the query would otherwise be nearer), so it is a border cell, and the
+  // distance to the nearest border cell of either answer is a lower bound.
+  const int width = limits.width(), height = limits.height();
+  std::vector<uint8_t> border(objecting.size(), 0);
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const size_t i = static_cast<size_t>(y) * width + x;
+      const uint8_t o = objecting[i];
+      border[i] = (x > 0 && objecting[i - 1] != o) || (x + 1 < width && objecting[i + 1] != o) ||
+                  (y > 0 && objecting[i - width] != o) ||
+                  (y + 1 < height && objecting[i + width] != o);
+    }
+  }
+  const std::vector<float> to_border = grid::SquaredDistanceToNearestSite(border, width, height);
   for (int64_t flat = 0; flat < limits.num_cells(); ++flat) {
-    const double d = to_other[flat] / kChamferExcess;
+    const double d = std::sqrt(static_cast<double>(to_border[flat]));
     const double quarters = std::isfinite(d) ? std::floor(4.0 * d) : kDistanceMask;
     cells_[flat] = static_cast<uint8_t>(std::min<double>(quarters, kDistanceMask)) |
                    (objecting[flat] ? kObjectsBit : 0);
