@@ -1,13 +1,34 @@
 #include "scout/io/output_directory.h"
 
+#include <signal.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <fstream>
 #include <system_error>
 
 #include "scout/common/error.h"
 
 namespace scout::io {
+namespace {
+
+const std::string kStagingPrefix = ".scout-staging-";
+
+// A run killed by a signal cannot clean up after itself: remove staging
+// directories whose process no longer exists.
+void RemoveAbandonedStaging(const std::filesystem::path& dir) {
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind(kStagingPrefix, 0) != 0) continue;
+    const std::string pid_text = name.substr(kStagingPrefix.size());
+    if (pid_text.empty() || pid_text.find_first_not_of("0123456789") != std::string::npos) continue;
+    const pid_t pid = static_cast<pid_t>(std::stol(pid_text));
+    if (::kill(pid, 0) != 0 && errno == ESRCH) std::filesystem::remove_all(entry.path(), ec);
+  }
+}
+
+}  // namespace
 
 OutputDirectory::OutputDirectory(const std::filesystem::path& dir) : dir_(dir) {
   std::error_code ec;
@@ -16,7 +37,8 @@ OutputDirectory::OutputDirectory(const std::filesystem::path& dir) : dir_(dir) {
     throw InputError("cannot create output directory '" + dir_.string() +
                      "': " + (ec ? ec.message() : std::string("not a directory")));
   }
-  staging_ = dir_ / (".scout-staging-" + std::to_string(::getpid()));
+  RemoveAbandonedStaging(dir_);
+  staging_ = dir_ / (kStagingPrefix + std::to_string(::getpid()));
   std::filesystem::create_directory(staging_, ec);
   const std::filesystem::path probe = staging_ / "probe";
   std::ofstream out(probe);

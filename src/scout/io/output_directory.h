@@ -15,6 +15,7 @@ class OutputDirectory {
  public:
   // Creates 'dir' if needed and checks that it is writable, before any long
   // computation starts. Throws InputError naming the directory otherwise.
+  // Staging directories left by runs that were killed are removed.
   explicit OutputDirectory(const std::filesystem::path& dir);
   ~OutputDirectory();
   OutputDirectory(const OutputDirectory&) = delete;

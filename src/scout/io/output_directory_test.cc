@@ -59,6 +59,21 @@ TEST(OutputDirectory, WithoutCommitNothingIsLeftBehind) {
   fs::remove_all(dir);
 }
 
+TEST(OutputDirectory, RemovesStagingLeftByKilledRuns) {
+  const fs::path dir = FreshDir();
+  // No process has pid 2^22 + 1 (above Linux's pid_max limit of 2^22).
+  const fs::path abandoned = dir / ".scout-staging-4194305";
+  fs::create_directories(abandoned);
+  WriteTextFileAtomically(abandoned / "summary.json", "{");
+  {
+    OutputDirectory out(dir);
+    out.Commit();
+  }
+  EXPECT_FALSE(fs::exists(abandoned));
+  EXPECT_TRUE(Listing(dir).empty());
+  fs::remove_all(dir);
+}
+
 TEST(OutputDirectory, RejectsADirectoryThatCannotBeCreated) {
   const fs::path dir = FreshDir();
   fs::create_directories(dir);
