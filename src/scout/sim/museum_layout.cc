@@ -8,15 +8,13 @@
 #include "scout/sim/box_util.h"
 #include "scout/sim/museum_world.h"
 #include "scout/sim/random.h"
+#include "scout/sim/world_options_check.h"
 
 namespace scout::sim {
 namespace {
 
 void Require(bool ok, const std::string& key, double value, const std::string& expected) {
-  if (!ok) {
-    throw InputError("museum world: " + key + " = " + std::to_string(value) + ": expected " +
-                     expected);
-  }
+  RequireWorldOption(ok, "museum world", key, value, expected);
 }
 
 void Validate(const MuseumWorldOptions& o) {

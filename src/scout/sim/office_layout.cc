@@ -10,15 +10,13 @@
 #include "scout/sim/office_furniture.h"
 #include "scout/sim/office_world.h"
 #include "scout/sim/random.h"
+#include "scout/sim/world_options_check.h"
 
 namespace scout::sim {
 namespace {
 
 void Require(bool ok, const std::string& key, double value, const std::string& expected) {
-  if (!ok) {
-    throw InputError("office world: " + key + " = " + std::to_string(value) + ": expected " +
-                     expected);
-  }
+  RequireWorldOption(ok, "office world", key, value, expected);
 }
 
 void Validate(const OfficeWorldOptions& o) {
