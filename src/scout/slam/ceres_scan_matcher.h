@@ -1,0 +1,50 @@
+#ifndef SCOUT_SLAM_CERES_SCAN_MATCHER_H_
+#define SCOUT_SLAM_CERES_SCAN_MATCHER_H_
+
+#include <Eigen/Core>
+
+#include "scout/geometry/rigid_transform.h"
+#include "scout/grid/probability_grid.h"
+#include "scout/slam/point_cloud.h"
+
+namespace scout::slam {
+
+struct CeresScanMatcherOptions {
+  // Scale of the per-point residuals (1 - p) / sqrt(N).
+  double occupied_space_weight = 1.0;
+  // Scale of the residual pulling the translation toward the target (per metre).
+  double translation_weight = 10.0;
+  // Scale of the residual pulling the rotation toward the initial estimate's (per radian).
+  double rotation_weight = 40.0;
+  // Solver iterations; scan matching runs once per scan, so this bounds its cost.
+  int max_num_iterations = 20;
+};
+
+// Throws std::invalid_argument naming the first invalid option.
+void Validate(const CeresScanMatcherOptions& options);
+
+// Nonlinear least-squares scan matcher (Hess et al. 2016, section IV): one
+// residual (occupied_space_weight / sqrt(N)) * (1 - p(T * point)) per point,
+// with p the bicubically interpolated probability of the grid. Unknown cells
+// (and the outside of the grid) count as kMinProbability, as in Cartographer:
+// points are drawn onto observed obstacles, never into unexplored space.
+class CeresScanMatcher {
+ public:
+  // Throws std::invalid_argument on invalid options.
+  explicit CeresScanMatcher(const CeresScanMatcherOptions& options);
+
+  // Refines 'initial_pose_estimate' (grid frame) so 'points' (scan frame) fall
+  // on occupied cells; priors pull the translation toward
+  // 'target_translation' and the rotation toward the initial estimate's.
+  // Returns the initial estimate unchanged if 'points' is empty.
+  geometry::Rigid2d Match(const Eigen::Vector2d& target_translation,
+                          const geometry::Rigid2d& initial_pose_estimate, const PointCloud& points,
+                          const grid::ProbabilityGrid& grid) const;
+
+ private:
+  CeresScanMatcherOptions options_;
+};
+
+}  // namespace scout::slam
+
+#endif  // SCOUT_SLAM_CERES_SCAN_MATCHER_H_

@@ -1,0 +1,87 @@
+#ifndef SCOUT_SLAM_FAST_CORRELATIVE_SCAN_MATCHER_H_
+#define SCOUT_SLAM_FAST_CORRELATIVE_SCAN_MATCHER_H_
+
+#include <cstdint>
+#include <numbers>
+#include <optional>
+#include <vector>
+
+#include "scout/geometry/rigid_transform.h"
+#include "scout/grid/map_limits.h"
+#include "scout/grid/probability_grid.h"
+#include "scout/slam/point_cloud.h"
+#include "scout/slam/scan_match_result.h"
+
+namespace scout::slam {
+
+struct FastCorrelativeScanMatcherOptions {
+  // Half-width of the square of translations searched (ALGORITHMS §7: 7 m).
+  double linear_search_window_m = 7.0;
+  // Half-width of the interval of rotations searched (ALGORITHMS §7: 30°).
+  double angular_search_window_rad = 30.0 * std::numbers::pi / 180.0;
+  // Number of precomputed grids; the coarsest pools 2^(depth-1) cells (ALGORITHMS §7: 7).
+  int branch_and_bound_depth = 7;
+};
+
+// Throws std::invalid_argument naming the first invalid option.
+void Validate(const FastCorrelativeScanMatcherOptions& options);
+
+// Returns the angular step of the correlative search: the rotation that moves
+// a point at 'max_range_m' by about one cell of 'resolution_m' (Hess et al.
+// 2016, eq. 7). Used by both correlative matchers.
+double AngularSearchStep(double max_range_m, double resolution_m);
+
+// Branch-and-bound correlative scan matcher (Hess et al. 2016, section V.C),
+// for loop closure. The discrete candidate set around an initial estimate
+// (t0, θ0) is: angles θ0 + k·δθ, |k| <= ceil(window_rad / δθ), δθ =
+// AngularSearchStep(largest point range, resolution); for each angle the
+// points are placed by Rigid2d(t0, θ0 + k·δθ) and discretized to their
+// cells, then shifted by (i, j) cells, |i|, |j| <= ceil(window_m / resolution).
+// A candidate's score is the mean probability of its points' cells, where an
+// unknown cell (or one outside the grid) counts as kMinProbability: unexplored
+// space must not look like a match. The result is exactly the best candidate
+// of that set (an exhaustive search would find the same score).
+class FastCorrelativeScanMatcher {
+ public:
+  // Precomputes the max-pooled grids of 'grid' (kept by value/copy of what is
+  // needed; 'grid' need not outlive this). Throws std::invalid_argument on
+  // invalid options.
+  FastCorrelativeScanMatcher(const grid::ProbabilityGrid& grid,
+                             const FastCorrelativeScanMatcherOptions& options);
+
+  // Best pose (grid frame) of 'points' (given in the scan frame) within the
+  // window around 'initial_pose_estimate', score = mean probability of the
+  // points' cells; nullopt if best score < min_score (or 'points' is empty).
+  std::optional<ScanMatchResult> Match(const geometry::Rigid2d& initial_pose_estimate,
+                                       const PointCloud& points, double min_score) const;
+
+  // As Match, but searching every rotation and every translation that keeps
+  // the grid's centre within the window centred on it (global localisation).
+  std::optional<ScanMatchResult> MatchFullSubmap(const PointCloud& points, double min_score) const;
+
+  const grid::MapLimits& limits() const { return limits_; }
+
+ private:
+  // Level d holds, for every cell c, the max raw value over the cells
+  // [c.x, c.x + 2^d) x [c.y, c.y + 2^d) of the grid; cells are offset by
+  // 2^d - 1 so that windows reaching into the grid from below are stored too.
+  struct PrecomputedGrid {
+    int offset = 0;  // 2^d - 1
+    int width = 0;
+    int height = 0;
+    std::vector<uint16_t> values;
+  };
+  struct Candidate;
+
+  std::optional<ScanMatchResult> Search(const geometry::Rigid2d& initial_pose_estimate,
+                                        const PointCloud& points, double linear_window_m,
+                                        double angular_window_rad, double min_score) const;
+
+  FastCorrelativeScanMatcherOptions options_;
+  grid::MapLimits limits_;
+  std::vector<PrecomputedGrid> levels_;
+};
+
+}  // namespace scout::slam
+
+#endif  // SCOUT_SLAM_FAST_CORRELATIVE_SCAN_MATCHER_H_

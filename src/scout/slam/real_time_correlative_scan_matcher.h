@@ -1,0 +1,48 @@
+#ifndef SCOUT_SLAM_REAL_TIME_CORRELATIVE_SCAN_MATCHER_H_
+#define SCOUT_SLAM_REAL_TIME_CORRELATIVE_SCAN_MATCHER_H_
+
+#include <numbers>
+
+#include "scout/geometry/rigid_transform.h"
+#include "scout/grid/probability_grid.h"
+#include "scout/slam/point_cloud.h"
+#include "scout/slam/scan_match_result.h"
+
+namespace scout::slam {
+
+struct RealTimeCorrelativeScanMatcherOptions {
+  // Half-width of the square of translations searched (ALGORITHMS §7: 0.1 m).
+  double linear_search_window_m = 0.1;
+  // Half-width of the interval of rotations searched (ALGORITHMS §7: 20°).
+  double angular_search_window_rad = 20.0 * std::numbers::pi / 180.0;
+  // Penalties for moving away from the initial estimate (per m², per rad²).
+  double translation_delta_cost_weight = 0.1;
+  double rotation_delta_cost_weight = 0.1;
+};
+
+// Throws std::invalid_argument naming the first invalid option.
+void Validate(const RealTimeCorrelativeScanMatcherOptions& options);
+
+// Exhaustive correlative scan matcher (Olson 2009 as used by Cartographer's
+// online correlative matching): tries every angle (step AngularSearchStep of
+// the scan's largest range) and every cell offset within the window. A
+// candidate scores the mean probability of its points' cells (unknown counts
+// as kMinProbability) times exp(-(w_t |dt|² + w_r |dθ|²)), which prefers the
+// initial estimate among equally good matches.
+class RealTimeCorrelativeScanMatcher {
+ public:
+  // Throws std::invalid_argument on invalid options.
+  explicit RealTimeCorrelativeScanMatcher(const RealTimeCorrelativeScanMatcherOptions& options);
+
+  // Returns the best candidate pose (grid frame) of 'points' (scan frame) and
+  // its score; the initial estimate with score 0 if 'points' is empty.
+  ScanMatchResult Match(const geometry::Rigid2d& initial_pose_estimate, const PointCloud& points,
+                        const grid::ProbabilityGrid& grid) const;
+
+ private:
+  RealTimeCorrelativeScanMatcherOptions options_;
+};
+
+}  // namespace scout::slam
+
+#endif  // SCOUT_SLAM_REAL_TIME_CORRELATIVE_SCAN_MATCHER_H_
