@@ -1,0 +1,180 @@
+#include "scout/io/map_picture.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdlib>
+#include <stdexcept>
+
+#include "scout/common/error.h"
+#include "scout/geometry/box.h"
+#include "scout/grid/image.h"
+#include "scout/grid/map_io.h"
+#include "scout/grid/submap_fusion.h"
+
+namespace scout::io {
+namespace {
+
+constexpr double kDefaultResolutionM = 0.05;
+constexpr uint8_t kUnknownGrey = 205;  // the map_server shade of unknown
+using Rgb = std::array<uint8_t, 3>;
+constexpr Rgb kStartColour = {20, 170, 40};
+constexpr Rgb kEndColour = {220, 20, 20};
+constexpr Rgb kPathStartColour = {20, 80, 255};
+constexpr Rgb kPathEndColour = {230, 40, 40};
+
+std::vector<grid::PlacedGrid> Placed(const GlobalSubmaps& submaps) {
+  std::vector<grid::PlacedGrid> placed;
+  for (const auto& [pose, grid] : submaps) {
+    if (grid != nullptr) placed.push_back({grid.get(), pose});
+  }
+  return placed;
+}
+
+double FinestResolution(const std::vector<grid::PlacedGrid>& placed) {
+  double resolution = 0.0;
+  for (const grid::PlacedGrid& s : placed) {
+    const double r = s.grid->limits().resolution();
+    resolution = resolution == 0.0 ? r : std::min(resolution, r);
+  }
+  return resolution == 0.0 ? kDefaultResolutionM : resolution;
+}
+
+// An RGB canvas over map cells, with rows flipped to image order.
+class Canvas {
+ public:
+  explicit Canvas(const grid::MapLimits& limits) : limits_(limits) {
+    image_.width = std::max(limits.width(), 1);
+    image_.height = std::max(limits.height(), 1);
+    image_.channels = 3;
+    image_.pixels.assign(static_cast<size_t>(image_.width) * image_.height * 3, kUnknownGrey);
+  }
+  const grid::MapLimits& limits() const { return limits_; }
+  const grid::Image& image() const { return image_; }
+
+  void Set(const grid::CellIndex& c, const Rgb& rgb) {
+    if (!limits_.Contains(c)) return;
+    std::copy(rgb.begin(), rgb.end(), image_.at(c.x, image_.height - 1 - c.y));
+  }
+  // A filled square of half side 'radius' cells, so that a line stays visible
+  // on pictures thousands of pixels wide.
+  void Stamp(const grid::CellIndex& c, int radius, const Rgb& rgb) {
+    for (int dy = -radius; dy <= radius; ++dy) {
+      for (int dx = -radius; dx <= radius; ++dx) Set({c.x + dx, c.y + dy}, rgb);
+    }
+  }
+  void Disc(const grid::CellIndex& c, int radius, const Rgb& rgb) {
+    for (int dy = -radius; dy <= radius; ++dy) {
+      for (int dx = -radius; dx <= radius; ++dx) {
+        if (dx * dx + dy * dy <= radius * radius) Set({c.x + dx, c.y + dy}, rgb);
+      }
+    }
+  }
+  // Bresenham line from 'from' to 'to' (both inclusive).
+  void Line(grid::CellIndex from, const grid::CellIndex& to, int radius, const Rgb& rgb) {
+    const int dx = std::abs(to.x - from.x), sx = from.x < to.x ? 1 : -1;
+    const int dy = -std::abs(to.y - from.y), sy = from.y < to.y ? 1 : -1;
+    int error = dx + dy;
+    while (true) {
+      Stamp(from, radius, rgb);
+      if (from == to) return;
+      const int e2 = 2 * error;
+      if (e2 >= dy) {
+        error += dy;
+        from.x += sx;
+      }
+      if (e2 <= dx) {
+        error += dx;
+        from.y += sy;
+      }
+    }
+  }
+
+ private:
+  grid::MapLimits limits_;
+  grid::Image image_;
+};
+
+Rgb Blend(const Rgb& from, const Rgb& to, double f) {
+  Rgb out;
+  for (int k = 0; k < 3; ++k)
+    out[k] = static_cast<uint8_t>(std::lround(from[k] + f * (to[k] - from[k])));
+  return out;
+}
+
+void DrawTrajectory(const std::vector<StampedPose>& trajectory, Canvas& canvas) {
+  if (trajectory.empty()) return;
+  const int side = std::max(canvas.limits().width(), canvas.limits().height());
+  const int line_radius = side >= 600 ? 1 : 0;
+  const int mark_radius = std::max(3, side / 150);
+  // The canvas covers the trajectory; clamping only moves a pose lying exactly
+  // on the max edge into the last cell.
+  const auto cell = [&](size_t k) {
+    const grid::CellIndex c = canvas.limits().CellContaining(trajectory[k].pose.translation());
+    return grid::CellIndex{std::clamp(c.x, 0, canvas.limits().width() - 1),
+                           std::clamp(c.y, 0, canvas.limits().height() - 1)};
+  };
+  for (size_t k = 1; k < trajectory.size(); ++k) {
+    const double f = static_cast<double>(k) / (trajectory.size() - 1);
+    canvas.Line(cell(k - 1), cell(k), line_radius, Blend(kPathStartColour, kPathEndColour, f));
+  }
+  canvas.Disc(cell(trajectory.size() - 1), mark_radius, kEndColour);
+  canvas.Disc(cell(0), mark_radius, kStartColour);
+}
+
+}  // namespace
+
+void WriteMapPicture(const GlobalSubmaps& submaps, const std::vector<StampedPose>& trajectory,
+                     const std::filesystem::path& path, int max_side_px) {
+  if (max_side_px < 2) throw std::invalid_argument("WriteMapPicture: max_side_px must be >= 2");
+  const std::vector<grid::PlacedGrid> placed = Placed(submaps);
+  geometry::Box2d bounds;
+  for (const grid::PlacedGrid& s : placed) {
+    const geometry::Box2d b = geometry::TransformBox(s.global_pose, s.grid->limits().Bounds());
+    if (b.empty()) continue;
+    bounds.Extend(b.min);
+    bounds.Extend(b.max);
+  }
+  for (const StampedPose& s : trajectory) bounds.Extend(s.pose.translation());
+  double resolution = FinestResolution(placed);
+  if (!bounds.empty()) {
+    // Aligning the origin to the resolution adds up to one cell per side.
+    const double side = std::max(bounds.max.x() - bounds.min.x(), bounds.max.y() - bounds.min.y());
+    resolution = std::max(resolution, side / (max_side_px - 1));
+  }
+  const grid::OccupancyMap fused = grid::FuseSubmaps(placed, resolution);
+  grid::MapLimits limits;
+  if (!bounds.empty()) {
+    // The same lattice as FuseSubmaps, so fused cells map to canvas cells by
+    // an integer shift.
+    const Eigen::Vector2d origin(std::floor(bounds.min.x() / resolution) * resolution,
+                                 std::floor(bounds.min.y() / resolution) * resolution);
+    const int width =
+        std::max(1, static_cast<int>(std::ceil((bounds.max.x() - origin.x()) / resolution)));
+    const int height =
+        std::max(1, static_cast<int>(std::ceil((bounds.max.y() - origin.y()) / resolution)));
+    limits = grid::MapLimits(resolution, origin, width, height);
+  }
+  Canvas canvas(limits);
+  for (int64_t flat = 0; flat < fused.limits.num_cells(); ++flat) {
+    const grid::CellState s = fused.cells[flat];
+    if (s == grid::CellState::kUnknown) continue;
+    const grid::CellIndex c =
+        limits.CellContaining(fused.limits.CellCenter(fused.limits.CellOfFlatIndex(flat)));
+    const uint8_t v = s == grid::CellState::kFree ? 255 : 0;
+    canvas.Set(c, {v, v, v});
+  }
+  DrawTrajectory(trajectory, canvas);
+  grid::WriteImage(canvas.image(), path);
+}
+
+void WriteMapServerMap(const GlobalSubmaps& submaps, const std::filesystem::path& yaml_path) {
+  const std::vector<grid::PlacedGrid> placed = Placed(submaps);
+  const grid::OccupancyMap fused = grid::FuseSubmaps(placed, FinestResolution(placed));
+  if (fused.limits.num_cells() == 0) {
+    throw InputError(yaml_path.string() + ": no submap cells to write as a map");
+  }
+  grid::WriteMapServerMap(fused, yaml_path);
+}
+
+}  // namespace scout::io

@@ -1,0 +1,38 @@
+#ifndef SCOUT_IO_MAP_PICTURE_H_
+#define SCOUT_IO_MAP_PICTURE_H_
+
+#include <filesystem>
+#include <memory>
+#include <utility>
+#include <vector>
+
+#include "scout/geometry/rigid_transform.h"
+#include "scout/grid/probability_grid.h"
+#include "scout/io/trajectory.h"
+
+namespace scout::io {
+
+// Submap grids with their global poses (grid frame -> map frame).
+using GlobalSubmaps =
+    std::vector<std::pair<geometry::Rigid2d, std::shared_ptr<const grid::ProbabilityGrid>>>;
+
+// Writes a PNG picture of the submaps fused by grid::FuseSubmaps: free white,
+// occupied black, unknown grey; over it 'trajectory' as a polyline whose
+// colour runs from blue (start) to red (end), a green disc at the first pose
+// and a red disc at the last. The picture covers the submaps and the
+// trajectory, at the finest submap resolution (0.05 m without submaps)
+// coarsened so that neither side exceeds 'max_side_px'; its top row is the
+// map's max-y row. Written through a temporary file and rename. Throws
+// std::invalid_argument unless max_side_px >= 2, InputError when the
+// directory is not writable.
+void WriteMapPicture(const GlobalSubmaps& submaps, const std::vector<StampedPose>& trajectory,
+                     const std::filesystem::path& path, int max_side_px = 3000);
+
+// Writes the fused submaps at the finest submap resolution as a ROS
+// map_server map ('yaml_path' plus a PGM beside it, see grid/map_io.h).
+// Throws InputError when there is no submap or the directory is not writable.
+void WriteMapServerMap(const GlobalSubmaps& submaps, const std::filesystem::path& yaml_path);
+
+}  // namespace scout::io
+
+#endif  // SCOUT_IO_MAP_PICTURE_H_

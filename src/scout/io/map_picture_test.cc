@@ -1,0 +1,97 @@
+#include "scout/io/map_picture.h"
+
+#include <gtest/gtest.h>
+
+#include "scout/common/error.h"
+#include "scout/grid/image.h"
+#include "scout/grid/map_io.h"
+#include "scout/grid/submap_fusion.h"
+#include "scout/grid/test_temp_directory.h"
+
+namespace scout::io {
+namespace {
+
+// An 80 x 48 cell submap at 0.125 m (10 m x 6 m): free for x < 40, an
+// occupied wall at x = 40, unknown beyond.
+std::shared_ptr<const grid::ProbabilityGrid> HalfKnownSubmap() {
+  auto g = std::make_shared<grid::ProbabilityGrid>(grid::MapLimits(0.125, {0, 0}, 80, 48));
+  for (int y = 0; y < 48; ++y) {
+    for (int x = 0; x < 40; ++x) g->SetProbability({x, y}, 0.2f);
+    g->SetProbability({40, y}, 0.9f);
+  }
+  return g;
+}
+
+bool IsColoured(const uint8_t* px) { return px[0] != px[1] || px[1] != px[2]; }
+
+TEST(WriteMapPicture, DrawsTheFusedMapAndTheTrajectoryInColour) {
+  const grid::TestTempDirectory dir;
+  const GlobalSubmaps submaps = {{geometry::Rigid2d(1.0, 2.0, 0.0), HalfKnownSubmap()}};
+  // From (2, 3) east to (4, 3), then north to (4, 7): all inside the free half.
+  const std::vector<StampedPose> trajectory = {{0.0, geometry::Rigid2d(2.0, 3.0, 0)},
+                                               {1.0, geometry::Rigid2d(4.0, 3.0, 0)},
+                                               {2.0, geometry::Rigid2d(4.0, 7.0, 0)}};
+  const auto path = dir.path() / "map.png";
+  WriteMapPicture(submaps, trajectory, path);
+  const grid::Image image = grid::ReadImage(path);
+  ASSERT_EQ(image.width, 80);
+  ASSERT_EQ(image.height, 48);
+  ASSERT_EQ(image.channels, 3);
+  // Pixel of a global point: map origin (1, 2), 0.125 m cells, rows flipped.
+  const auto at = [&](double x, double y) {
+    return image.at(static_cast<int>((x - 1.0) / 0.125), 47 - static_cast<int>((y - 2.0) / 0.125));
+  };
+  EXPECT_EQ(at(1.6, 7.6)[0], 255);  // free, away from the path
+  EXPECT_EQ(at(6.06, 5.0)[0], 0);   // the wall
+  EXPECT_EQ(at(9.0, 5.0)[0], 205);  // unknown
+  EXPECT_FALSE(IsColoured(at(9.0, 5.0)));
+  EXPECT_TRUE(IsColoured(at(3.0, 3.06)));  // on the first leg
+  EXPECT_TRUE(IsColoured(at(4.06, 5.5)));  // on the second leg
+  const uint8_t* start = at(2.06, 3.06);
+  EXPECT_GT(start[1], start[0]);  // green start mark
+  const uint8_t* end = at(4.06, 6.94);
+  EXPECT_GT(end[0], end[1]);  // red end mark
+  int coloured = 0;
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) coloured += IsColoured(image.at(x, y));
+  }
+  // The 16 + 32 cells of the legs plus two discs; no stray colour elsewhere.
+  EXPECT_GE(coloured, 48);
+  EXPECT_LE(coloured, 48 + 2 * 49);
+}
+
+TEST(WriteMapPicture, CoarsensToMaxSideAndCoversTheTrajectory) {
+  const grid::TestTempDirectory dir;
+  const GlobalSubmaps submaps = {{geometry::Rigid2d(0.0, 0.0, 0.0), HalfKnownSubmap()}};
+  // The trajectory leaves the map to x = 20: the picture grows to show it.
+  const std::vector<StampedPose> trajectory = {{0.0, geometry::Rigid2d(1.0, 1.0, 0)},
+                                               {1.0, geometry::Rigid2d(20.0, 1.0, 0)}};
+  const auto path = dir.path() / "small.png";
+  WriteMapPicture(submaps, trajectory, path, 50);
+  const grid::Image image = grid::ReadImage(path);
+  EXPECT_LE(image.width, 50);
+  EXPECT_GE(image.width, 49);
+  EXPECT_LE(image.height, 16);  // 6 m at 20 m / 49 px
+  EXPECT_TRUE(IsColoured(image.at(image.width - 2, image.height - 3)));
+  EXPECT_THROW(WriteMapPicture(submaps, trajectory, path, 1), std::invalid_argument);
+}
+
+TEST(WriteMapServerMap, WritesTheFusedMapAtSubmapResolution) {
+  const grid::TestTempDirectory dir;
+  const GlobalSubmaps submaps = {{geometry::Rigid2d(1.0, 2.0, 0.0), HalfKnownSubmap()},
+                                 {geometry::Rigid2d(6.0, 2.0, 0.0), HalfKnownSubmap()}};
+  const auto yaml = dir.path() / "map.yaml";
+  WriteMapServerMap(submaps, yaml);
+  const grid::OccupancyMap read = grid::ReadMapServerMap(yaml);
+  const grid::OccupancyMap fused = grid::FuseSubmaps(
+      {{submaps[0].second.get(), submaps[0].first}, {submaps[1].second.get(), submaps[1].first}},
+      0.125);
+  EXPECT_EQ(read.limits.width(), fused.limits.width());
+  EXPECT_EQ(read.limits.height(), fused.limits.height());
+  EXPECT_NEAR(read.limits.origin().x(), 1.0, 1e-9);
+  EXPECT_TRUE(read.cells == fused.cells);
+  EXPECT_THROW(WriteMapServerMap({}, dir.path() / "empty.yaml"), InputError);
+}
+
+}  // namespace
+}  // namespace scout::io
