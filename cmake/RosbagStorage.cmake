@@ -27,6 +27,10 @@ set_target_properties(Scout::rosbag_storage PROPERTIES
   INTERFACE_LINK_LIBRARIES "${_scout_rosbag_libs}")
 
 # scout_ros1_sources(FILES...): compiles these files as C++17 (ROS 1 headers).
+# Call it from the CMakeLists.txt that declares the target: source properties
+# are only seen by targets of the directory they are set in. CMake emits the
+# target's -std=c++20 before per-source options, so this later -std=c++17
+# wins (checked in compile_commands.json).
 function(scout_ros1_sources)
-  set_source_files_properties(${ARGN} DIRECTORY ${PROJECT_SOURCE_DIR} PROPERTIES COMPILE_OPTIONS "-std=c++17")
+  set_source_files_properties(${ARGN} PROPERTIES COMPILE_OPTIONS "-std=c++17")
 endfunction()
