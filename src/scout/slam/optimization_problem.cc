@@ -1,0 +1,198 @@
+#include "scout/slam/optimization_problem.h"
+
+#include <ceres/ceres.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+#include <tuple>
+
+namespace scout::slam {
+namespace {
+
+using Pose = std::array<double, 3>;  // x, y, theta: one Ceres parameter block
+
+void RequirePositive(const char* key, double value) {
+  if (!(std::isfinite(value) && value > 0.0)) {
+    throw std::invalid_argument(std::string("optimization_problem option '") + key +
+                                "': expected a positive finite number, got " +
+                                std::to_string(value));
+  }
+}
+
+// Wraps an angle into [-pi, pi). floor() has zero derivative, so autodiff
+// sees the plain difference: the residual stays smooth across the wrap.
+template <typename T>
+T NormalizeAngleResidual(const T& angle) {
+  constexpr double kTwoPi = 2.0 * M_PI;
+  using std::floor;
+  return angle - T(kTwoPi) * floor((angle + T(M_PI)) / T(kTwoPi));
+}
+
+// The SPA residual: the measured pose of 'second' in the frame of 'first'
+// minus the one the current estimates imply, scaled by the weights.
+class RelativePoseCost {
+ public:
+  RelativePoseCost(const geometry::Rigid2d& measured, double translation_weight,
+                   double rotation_weight)
+      : x_(measured.x()),
+        y_(measured.y()),
+        theta_(measured.theta()),
+        translation_weight_(translation_weight),
+        rotation_weight_(rotation_weight) {}
+
+  template <typename T>
+  bool operator()(const T* const first, const T* const second, T* residual) const {
+    using std::cos;
+    using std::sin;
+    const T c = cos(first[2]);
+    const T s = sin(first[2]);
+    const T dx = second[0] - first[0];
+    const T dy = second[1] - first[1];
+    residual[0] = T(translation_weight_) * (T(x_) - (c * dx + s * dy));
+    residual[1] = T(translation_weight_) * (T(y_) - (-s * dx + c * dy));
+    residual[2] = T(rotation_weight_) * NormalizeAngleResidual(T(theta_) - (second[2] - first[2]));
+    return true;
+  }
+
+  static ceres::CostFunction* Create(const geometry::Rigid2d& measured, double translation_weight,
+                                     double rotation_weight) {
+    return new ceres::AutoDiffCostFunction<RelativePoseCost, 3, 3, 3>(
+        new RelativePoseCost(measured, translation_weight, rotation_weight));
+  }
+
+ private:
+  double x_, y_, theta_;
+  double translation_weight_, rotation_weight_;
+};
+
+Pose ToPose(const geometry::Rigid2d& t) { return {t.x(), t.y(), t.theta()}; }
+geometry::Rigid2d FromPose(const Pose& p) { return geometry::Rigid2d(p[0], p[1], p[2]); }
+
+// Constraint order as a total order on content, so the residual order (and
+// hence the floating-point result) does not depend on insertion order.
+bool ConstraintLess(const Constraint& a, const Constraint& b) {
+  const auto key = [](const Constraint& c) {
+    return std::make_tuple(c.submap_id, c.node_id, static_cast<int>(c.kind), c.relative_pose.x(),
+                           c.relative_pose.y(), c.relative_pose.theta(), c.translation_weight,
+                           c.rotation_weight);
+  };
+  return key(a) < key(b);
+}
+
+}  // namespace
+
+void Validate(const OptimizationProblemOptions& options) {
+  RequirePositive("huber_scale", options.huber_scale);
+  RequirePositive("local_slam_pose_translation_weight", options.local_slam_pose_translation_weight);
+  RequirePositive("local_slam_pose_rotation_weight", options.local_slam_pose_rotation_weight);
+  RequirePositive("odometry_translation_weight", options.odometry_translation_weight);
+  RequirePositive("odometry_rotation_weight", options.odometry_rotation_weight);
+  if (options.max_num_iterations < 1) {
+    throw std::invalid_argument(
+        "optimization_problem option 'max_num_iterations': expected >= 1, got " +
+        std::to_string(options.max_num_iterations));
+  }
+  if (options.num_threads < 1) {
+    throw std::invalid_argument("optimization_problem option 'num_threads': expected >= 1, got " +
+                                std::to_string(options.num_threads));
+  }
+}
+
+OptimizationProblem::OptimizationProblem(const OptimizationProblemOptions& options)
+    : options_(options) {
+  Validate(options_);
+}
+
+OptimizationResult OptimizationProblem::Solve(
+    const std::vector<OptimizationNode>& nodes,
+    const std::vector<geometry::Rigid2d>& submap_global_poses,
+    const std::vector<Constraint>& constraints) const {
+  const int num_nodes = static_cast<int>(nodes.size());
+  const int num_submaps = static_cast<int>(submap_global_poses.size());
+  for (const Constraint& c : constraints) {
+    if (c.node_id < 0 || c.node_id >= num_nodes || c.submap_id < 0 || c.submap_id >= num_submaps) {
+      throw std::invalid_argument(
+          "OptimizationProblem::Solve: constraint (submap " + std::to_string(c.submap_id) +
+          ", node " + std::to_string(c.node_id) + ") outside " + std::to_string(num_submaps) +
+          " submaps / " + std::to_string(num_nodes) + " nodes");
+    }
+  }
+
+  // Parameter blocks live in these vectors, sized once: Ceres keeps pointers.
+  std::vector<Pose> node_poses(nodes.size());
+  std::vector<Pose> submap_poses(submap_global_poses.size());
+  for (int i = 0; i < num_nodes; ++i) node_poses[i] = ToPose(nodes[i].global_pose);
+  for (int i = 0; i < num_submaps; ++i) submap_poses[i] = ToPose(submap_global_poses[i]);
+
+  std::vector<const Constraint*> ordered;
+  ordered.reserve(constraints.size());
+  for (const Constraint& c : constraints) ordered.push_back(&c);
+  std::sort(ordered.begin(), ordered.end(),
+            [](const Constraint* a, const Constraint* b) { return ConstraintLess(*a, *b); });
+
+  ceres::Problem problem;
+  for (const Constraint* c : ordered) {
+    ceres::LossFunction* loss = c->kind == ConstraintKind::kInterSubmap
+                                    ? new ceres::HuberLoss(options_.huber_scale)
+                                    : nullptr;
+    problem.AddResidualBlock(
+        RelativePoseCost::Create(c->relative_pose, c->translation_weight, c->rotation_weight), loss,
+        submap_poses[c->submap_id].data(), node_poses[c->node_id].data());
+  }
+  for (int i = 0; i + 1 < num_nodes; ++i) {
+    const OptimizationNode& a = nodes[i];
+    const OptimizationNode& b = nodes[i + 1];
+    problem.AddResidualBlock(RelativePoseCost::Create(a.local_pose.inverse() * b.local_pose,
+                                                      options_.local_slam_pose_translation_weight,
+                                                      options_.local_slam_pose_rotation_weight),
+                             nullptr, node_poses[i].data(), node_poses[i + 1].data());
+    if (options_.use_odometry_constraints && a.odometry_pose && b.odometry_pose) {
+      problem.AddResidualBlock(
+          RelativePoseCost::Create(a.odometry_pose->inverse() * *b.odometry_pose,
+                                   options_.odometry_translation_weight,
+                                   options_.odometry_rotation_weight),
+          nullptr, node_poses[i].data(), node_poses[i + 1].data());
+    }
+  }
+  if (num_submaps > 0 && problem.HasParameterBlock(submap_poses[0].data())) {
+    problem.SetParameterBlockConstant(submap_poses[0].data());
+  }
+
+  OptimizationResult result;
+  if (problem.NumResidualBlocks() > 0) {
+    ceres::Solver::Options solver_options;
+    solver_options.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
+    solver_options.max_num_iterations = options_.max_num_iterations;
+    solver_options.num_threads = options_.num_threads;
+    solver_options.logging_type = ceres::SILENT;
+    const auto start = std::chrono::steady_clock::now();
+    ceres::Solver::Summary summary;
+    ceres::Solve(solver_options, &problem, &summary);
+    result.summary.solve_time_s =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    result.summary.num_iterations = static_cast<int>(summary.iterations.size());
+    result.summary.initial_cost = summary.initial_cost;
+    result.summary.final_cost = summary.final_cost;
+    result.summary.usable = summary.IsSolutionUsable();
+  } else {
+    result.summary.usable = true;  // nothing to adjust: the start is the answer
+  }
+
+  if (!result.summary.usable) {
+    // A failed solve must not scramble the map: keep the start poses.
+    for (int i = 0; i < num_nodes; ++i) node_poses[i] = ToPose(nodes[i].global_pose);
+    for (int i = 0; i < num_submaps; ++i) submap_poses[i] = ToPose(submap_global_poses[i]);
+  }
+  result.node_global_poses.reserve(nodes.size());
+  result.submap_global_poses.reserve(submap_global_poses.size());
+  for (const Pose& p : node_poses) result.node_global_poses.push_back(FromPose(p));
+  for (const Pose& p : submap_poses) result.submap_global_poses.push_back(FromPose(p));
+  return result;
+}
+
+}  // namespace scout::slam

@@ -1,0 +1,48 @@
+#ifndef SCOUT_SLAM_POSE_GRAPH_TYPES_H_
+#define SCOUT_SLAM_POSE_GRAPH_TYPES_H_
+
+#include <optional>
+
+#include "scout/geometry/rigid_transform.h"
+
+// Plain data shared by the pose graph, the constraint builder and the sparse
+// pose adjustment. Nodes (one per inserted scan) and submaps are numbered
+// densely from 0 in creation order, so a vector index is an id.
+namespace scout::slam {
+
+// Where a constraint comes from, which decides how much it is trusted.
+enum class ConstraintKind {
+  // A node and a submap it was inserted into: the relative pose local SLAM
+  // measured. Always correct up to local drift.
+  kIntraSubmap,
+  // A loop closure found by scan matching a node against a finished submap.
+  // Can be wrong (perceptual aliasing), so it is solved under a robust loss.
+  kInterSubmap,
+};
+
+// A measured pose of node 'node_id' in the frame of submap 'submap_id'.
+struct Constraint {
+  int submap_id = 0;
+  int node_id = 0;
+  // Node frame -> submap frame.
+  geometry::Rigid2d relative_pose;
+  // Residual scale for the translation (per metre) and rotation (per radian).
+  double translation_weight = 1.0;
+  double rotation_weight = 1.0;
+  ConstraintKind kind = ConstraintKind::kIntraSubmap;
+};
+
+// What the optimisation needs to know about a node.
+struct OptimizationNode {
+  double time_s = 0.0;
+  // Robot pose in the local SLAM frame when the scan was inserted.
+  geometry::Rigid2d local_pose;
+  // Current estimate in the global (optimised) frame; the solver's start.
+  geometry::Rigid2d global_pose;
+  // Wheel-odometry pose at the node's time, if odometry was available.
+  std::optional<geometry::Rigid2d> odometry_pose;
+};
+
+}  // namespace scout::slam
+
+#endif  // SCOUT_SLAM_POSE_GRAPH_TYPES_H_
