@@ -1,0 +1,119 @@
+#ifndef SCOUT_SLAM_GLOBAL_TEST_WORLD_H_
+#define SCOUT_SLAM_GLOBAL_TEST_WORLD_H_
+
+// Test-only: a corridor loop made of wall segments and a lidar over it, so
+// global SLAM tests know the true pose of every scan. Not part of the library.
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include "scout/geometry/rigid_transform.h"
+#include "scout/grid/probability_grid.h"
+#include "scout/grid/range_data_inserter.h"
+#include "scout/sensor/laser_scan.h"
+#include "scout/slam/point_cloud.h"
+
+namespace scout::slam::global_testing {
+
+struct Wall {
+  Eigen::Vector2d from;
+  Eigen::Vector2d to;
+};
+
+inline void AddRectangle(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi,
+                         std::vector<Wall>* walls) {
+  const Eigen::Vector2d a = lo, b(hi.x(), lo.y()), c = hi, d(lo.x(), hi.y());
+  walls->insert(walls->end(), {{a, b}, {b, c}, {c, d}, {d, a}});
+}
+
+// A 3 m wide corridor around a 14 m x 6 m block (outer walls 20 m x 12 m,
+// from (-10, -6) to (10, 6)), with pillars and niches so no two stretches of
+// corridor look alike. The corridor centre line is the rectangle
+// (-8.5, -4.5) .. (8.5, 4.5).
+inline std::vector<Wall> CorridorLoop() {
+  std::vector<Wall> walls;
+  AddRectangle({-10.0, -6.0}, {10.0, 6.0}, &walls);
+  AddRectangle({-7.0, -3.0}, {7.0, 3.0}, &walls);
+  AddRectangle({-4.0, -5.6}, {-3.4, -5.0}, &walls);  // pillars
+  AddRectangle({2.0, 4.9}, {2.8, 5.5}, &walls);
+  AddRectangle({8.8, -1.0}, {9.6, -0.2}, &walls);
+  AddRectangle({-9.5, 1.5}, {-9.0, 3.5}, &walls);
+  walls.push_back({{5.0, -6.0}, {6.0, -5.2}});  // slanted corner pieces
+  walls.push_back({{-7.0, 4.0}, {-6.2, 3.0}});
+  walls.push_back({{7.0, 1.0}, {7.8, 2.2}});
+  return walls;
+}
+
+// Returns the range to the first wall hit along the ray, +infinity if none.
+inline double CastRay(const std::vector<Wall>& walls, const Eigen::Vector2d& origin,
+                      const Eigen::Vector2d& direction) {
+  double nearest = std::numeric_limits<double>::infinity();
+  for (const Wall& w : walls) {
+    const Eigen::Vector2d edge = w.to - w.from;
+    const Eigen::Vector2d rel = w.from - origin;
+    const double cross = direction.x() * edge.y() - direction.y() * edge.x();
+    if (std::abs(cross) < 1e-12) continue;  // parallel
+    const double t = (rel.x() * edge.y() - rel.y() * edge.x()) / cross;
+    const double s = (rel.x() * direction.y() - rel.y() * direction.x()) / cross;
+    if (t > 1e-9 && s >= 0.0 && s <= 1.0) nearest = std::min(nearest, t);
+  }
+  return nearest;
+}
+
+struct LidarModel {
+  int num_beams = 360;
+  double field_of_view_rad = 2.0 * M_PI;
+  double max_range_m = 8.0;
+  double range_noise_m = 0.0;  // standard deviation
+};
+
+// A scan from robot pose 'pose' (world frame); beyond max range reads +inf.
+inline sensor::LaserScan SimulateScan(const std::vector<Wall>& walls, const geometry::Rigid2d& pose,
+                                      double time_s, const LidarModel& lidar, std::mt19937* rng) {
+  sensor::LaserScan scan;
+  scan.time_s = time_s;
+  scan.angle_min_rad = static_cast<float>(-0.5 * lidar.field_of_view_rad);
+  scan.angle_increment_rad = static_cast<float>(lidar.field_of_view_rad / lidar.num_beams);
+  scan.range_min_m = 0.1f;
+  scan.range_max_m = static_cast<float>(lidar.max_range_m);
+  std::normal_distribution<double> noise(0.0, 1.0);
+  for (int k = 0; k < lidar.num_beams; ++k) {
+    const double angle = pose.theta() + scan.angle_min_rad + k * scan.angle_increment_rad;
+    double range =
+        CastRay(walls, pose.translation(), Eigen::Vector2d(std::cos(angle), std::sin(angle)));
+    if (lidar.range_noise_m > 0.0 && rng != nullptr) range += lidar.range_noise_m * noise(*rng);
+    scan.ranges.push_back(range < lidar.max_range_m ? static_cast<float>(range)
+                                                    : std::numeric_limits<float>::infinity());
+  }
+  return scan;
+}
+
+// Returns the returns of a noiseless scan from 'pose', in the robot frame.
+inline PointCloud ScanReturns(const std::vector<Wall>& walls, const geometry::Rigid2d& pose) {
+  return sensor::ToRangeData(SimulateScan(walls, pose, 0.0, {}, nullptr), {}).returns;
+}
+
+// A grid in the frame 'grid_frame' (world pose of the grid's frame) built
+// from noiseless scans taken at 'world_poses'.
+inline grid::ProbabilityGrid BuildGrid(const std::vector<Wall>& walls,
+                                       const geometry::Rigid2d& grid_frame,
+                                       const std::vector<geometry::Rigid2d>& world_poses) {
+  grid::ProbabilityGrid grid(grid::MapLimits(0.05, {-1.0, -1.0}, 40, 40));
+  const grid::RangeDataInserter inserter({});
+  for (const geometry::Rigid2d& pose : world_poses) {
+    const sensor::RangeData data =
+        sensor::ToRangeData(SimulateScan(walls, pose, 0.0, {}, nullptr), {});
+    const geometry::Rigid2d in_grid = grid_frame.inverse() * pose;
+    inserter.Insert(in_grid.translation(), TransformPointCloud(data.returns, in_grid),
+                    TransformPointCloud(data.misses, in_grid), &grid);
+  }
+  return grid;
+}
+
+}  // namespace scout::slam::global_testing
+
+#endif  // SCOUT_SLAM_GLOBAL_TEST_WORLD_H_
