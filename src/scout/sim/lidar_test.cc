@@ -122,6 +122,41 @@ TEST(Lidar, FullDropoutReportsNoReturns) {
   }
 }
 
+TEST(Lidar, DropoutRateMatchesProbability) {
+  const World world = MakeWallWorld();
+  LidarOptions options;
+  options.dropout_probability = 0.1;
+  const Lidar lidar(options);
+  std::mt19937_64 rng(3);
+  int dropped = 0, total = 0;
+  for (int i = 0; i < 200; ++i) {
+    for (float r : lidar.Scan(world, geometry::Rigid2d(1.0, 2.5, 0.0), 0.0, rng).ranges) {
+      dropped += std::isnan(r) ? 1 : 0;
+      ++total;
+    }
+  }
+  // 36200 beams: the binomial sd of the rate is 0.0016.
+  EXPECT_NEAR(static_cast<double>(dropped) / total, 0.1, 0.006);
+}
+
+TEST(Lidar, DropoutsLeaveTheOtherBeamsUnchanged) {
+  const World world = MakeWallWorld();
+  LidarOptions with_dropouts;
+  with_dropouts.dropout_probability = 0.3;
+  std::mt19937_64 a(4), b(4);
+  const geometry::Rigid2d pose(1.0, 2.5, 0.2);
+  const sensor::LaserScan dropped = Lidar(with_dropouts).Scan(world, pose, 0.0, a);
+  const sensor::LaserScan full = Lidar(LidarOptions{}).Scan(world, pose, 0.0, b);
+  int kept = 0;
+  for (size_t k = 0; k < full.ranges.size(); ++k) {
+    if (std::isnan(dropped.ranges[k])) continue;
+    EXPECT_EQ(dropped.ranges[k], full.ranges[k]) << k;
+    ++kept;
+  }
+  EXPECT_GT(kept, 90);
+  EXPECT_LT(kept, 160);
+}
+
 TEST(Lidar, RejectsInvalidOptions) {
   LidarOptions options;
   options.beams = 0;
