@@ -1,0 +1,151 @@
+#include "scout/slam/ceres_scan_matcher.h"
+
+#include <ceres/ceres.h>
+#include <ceres/cubic_interpolation.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "scout/grid/probability_values.h"
+
+namespace scout::slam {
+namespace {
+
+// Presents the grid to ceres::BiCubicInterpolator as samples at cell centres
+// (row = y, column = x). Every integer index is valid: the outside of the grid
+// reads as kMinProbability, so points may be interpolated anywhere.
+class GridSamples {
+ public:
+  enum { DATA_DIMENSION = 1 };
+  explicit GridSamples(const grid::ProbabilityGrid& grid) : grid_(grid) {}
+
+  void GetValue(int row, int column, double* probability) const {
+    const uint16_t v = grid_.value({column, row});
+    // Unknown counts as free (Cartographer's choice): matching into unexplored
+    // space must not be rewarded.
+    *probability = v == grid::kUnknownValue ? grid::kMinProbability : grid::ValueToProbability(v);
+  }
+
+ private:
+  const grid::ProbabilityGrid& grid_;
+};
+
+class OccupiedSpaceCost {
+ public:
+  OccupiedSpaceCost(double scale, const PointCloud& points, const grid::ProbabilityGrid& grid)
+      : scale_(scale),
+        points_(points),
+        limits_(grid.limits()),
+        samples_(grid),
+        interpolator_(samples_) {}
+
+  template <typename T>
+  bool operator()(const T* const pose, T* residuals) const {
+    using std::cos, std::sin;
+    const T c = cos(pose[2]);
+    const T s = sin(pose[2]);
+    const double inv_resolution = 1.0 / limits_.resolution();
+    for (size_t i = 0; i < points_.size(); ++i) {
+      const Eigen::Vector2d& p = points_[i];
+      const T x = c * p.x() - s * p.y() + pose[0];
+      const T y = s * p.x() + c * p.y() + pose[1];
+      // Sample (r, c) sits at the centre of cell (x = c, y = r).
+      const T column = (x - limits_.origin().x()) * inv_resolution - 0.5;
+      const T row = (y - limits_.origin().y()) * inv_resolution - 0.5;
+      T probability;
+      interpolator_.Evaluate(row, column, &probability);
+      residuals[i] = scale_ * (1.0 - probability);
+    }
+    return true;
+  }
+
+ private:
+  const double scale_;
+  const PointCloud& points_;
+  const grid::MapLimits limits_;
+  const GridSamples samples_;
+  const ceres::BiCubicInterpolator<GridSamples> interpolator_;
+};
+
+struct TranslationDeltaCost {
+  template <typename T>
+  bool operator()(const T* const pose, T* residuals) const {
+    residuals[0] = weight * (pose[0] - target.x());
+    residuals[1] = weight * (pose[1] - target.y());
+    return true;
+  }
+  double weight;
+  Eigen::Vector2d target;
+};
+
+struct RotationDeltaCost {
+  template <typename T>
+  bool operator()(const T* const pose, T* residuals) const {
+    residuals[0] = weight * (pose[2] - target_rad);
+    return true;
+  }
+  double weight;
+  double target_rad;
+};
+
+void CheckOption(bool ok, const char* name, double value, const char* expected) {
+  if (!ok) {
+    throw std::invalid_argument(std::string("ceres_scan_matcher.") + name + " must be " + expected +
+                                ", got " + std::to_string(value));
+  }
+}
+
+}  // namespace
+
+void Validate(const CeresScanMatcherOptions& options) {
+  CheckOption(options.occupied_space_weight > 0.0, "occupied_space_weight",
+              options.occupied_space_weight, "> 0");
+  CheckOption(options.translation_weight >= 0.0, "translation_weight", options.translation_weight,
+              ">= 0");
+  CheckOption(options.rotation_weight >= 0.0, "rotation_weight", options.rotation_weight, ">= 0");
+  CheckOption(options.max_num_iterations >= 1, "max_num_iterations", options.max_num_iterations,
+              ">= 1");
+}
+
+CeresScanMatcher::CeresScanMatcher(const CeresScanMatcherOptions& options) : options_(options) {
+  Validate(options);
+}
+
+geometry::Rigid2d CeresScanMatcher::Match(const Eigen::Vector2d& target_translation,
+                                          const geometry::Rigid2d& initial_pose_estimate,
+                                          const PointCloud& points,
+                                          const grid::ProbabilityGrid& grid) const {
+  if (points.empty()) return initial_pose_estimate;
+  double pose[3] = {initial_pose_estimate.x(), initial_pose_estimate.y(),
+                    initial_pose_estimate.theta()};
+  ceres::Problem problem;
+  const double scale =
+      options_.occupied_space_weight / std::sqrt(static_cast<double>(points.size()));
+  problem.AddResidualBlock(
+      new ceres::AutoDiffCostFunction<OccupiedSpaceCost, ceres::DYNAMIC, 3>(
+          new OccupiedSpaceCost(scale, points, grid), static_cast<int>(points.size())),
+      nullptr, pose);
+  if (options_.translation_weight > 0.0) {
+    problem.AddResidualBlock(
+        new ceres::AutoDiffCostFunction<TranslationDeltaCost, 2, 3>(
+            new TranslationDeltaCost{options_.translation_weight, target_translation}),
+        nullptr, pose);
+  }
+  if (options_.rotation_weight > 0.0) {
+    problem.AddResidualBlock(new ceres::AutoDiffCostFunction<RotationDeltaCost, 1, 3>(
+                                 new RotationDeltaCost{options_.rotation_weight, pose[2]}),
+                             nullptr, pose);
+  }
+  ceres::Solver::Options solver_options;
+  solver_options.linear_solver_type = ceres::DENSE_QR;
+  solver_options.max_num_iterations = options_.max_num_iterations;
+  solver_options.num_threads = 1;
+  solver_options.logging_type = ceres::SILENT;
+  solver_options.minimizer_progress_to_stdout = false;
+  ceres::Solver::Summary summary;
+  ceres::Solve(solver_options, &problem, &summary);
+  return geometry::Rigid2d(pose[0], pose[1], pose[2]);
+}
+
+}  // namespace scout::slam

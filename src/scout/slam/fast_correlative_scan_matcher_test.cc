@@ -1,0 +1,128 @@
+#include "scout/slam/fast_correlative_scan_matcher.h"
+
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <limits>
+#include <stdexcept>
+
+#include "scout/grid/probability_values.h"
+#include "scout/slam/test_scene.h"
+
+namespace scout::slam {
+namespace {
+
+using geometry::Rigid2d;
+
+// The best score over the candidate set documented in the header, by
+// exhaustive search, with unknown and outside cells at kMinProbability.
+double BruteForceBestScore(const grid::ProbabilityGrid& grid, const Rigid2d& initial,
+                           const PointCloud& points, double linear_window_m,
+                           double angular_window_rad) {
+  const grid::MapLimits& limits = grid.limits();
+  double max_range_m = 0.0;
+  for (const Eigen::Vector2d& p : points) max_range_m = std::max(max_range_m, p.norm());
+  const double step = AngularSearchStep(max_range_m, limits.resolution());
+  const int n = static_cast<int>(std::ceil(angular_window_rad / step));
+  const int bound = static_cast<int>(std::ceil(linear_window_m / limits.resolution()));
+  int64_t best_sum = std::numeric_limits<int64_t>::min();
+  for (int k = -n; k <= n; ++k) {
+    const Rigid2d pose(initial.translation(), initial.theta() + k * step);
+    std::vector<grid::CellIndex> cells;
+    for (const Eigen::Vector2d& p : points) cells.push_back(limits.CellContaining(pose * p));
+    for (int x = -bound; x <= bound; ++x) {
+      for (int y = -bound; y <= bound; ++y) {
+        int64_t sum = 0;
+        for (const grid::CellIndex& c : cells) {
+          const uint16_t v = grid.value({c.x + x, c.y + y});
+          sum += v == grid::kUnknownValue ? 1 : v;
+        }
+        best_sum = std::max(best_sum, sum);
+      }
+    }
+  }
+  // Probability is linear in the raw value: 1 -> 0.1, 32767 -> 0.9.
+  const double mean_value = static_cast<double>(best_sum) / static_cast<double>(points.size());
+  return 0.1 + (mean_value - 1.0) * 0.8 / (grid::kMaxValue - 1);
+}
+
+RC_GTEST_PROP(FastCorrelativeScanMatcherProperty, EqualsBruteForceOnSmallWindows, ()) {
+  const int width = *rc::gen::inRange(1, 24);
+  const int height = *rc::gen::inRange(1, 24);
+  const double resolution = 0.1;
+  grid::ProbabilityGrid grid(grid::MapLimits(resolution, {-1.0, -0.5}, width, height));
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      // About a third unknown; the rest any probability, so ties are rare but possible.
+      if (*rc::gen::inRange(0, 3) == 0) continue;
+      grid.SetProbability({x, y}, static_cast<float>(*rc::gen::inRange(100, 901)) / 1000.f);
+    }
+  }
+  const int num_points = *rc::gen::inRange(1, 12);
+  PointCloud points;
+  for (int i = 0; i < num_points; ++i) {
+    points.push_back({*rc::gen::inRange(-150, 151) / 100.0, *rc::gen::inRange(-150, 151) / 100.0});
+  }
+  const Rigid2d initial(*rc::gen::inRange(-50, 150) / 100.0, *rc::gen::inRange(-50, 150) / 100.0,
+                        *rc::gen::inRange(-314, 315) / 100.0);
+  FastCorrelativeScanMatcherOptions options;
+  options.linear_search_window_m = *rc::gen::inRange(0, 80) / 100.0;
+  options.angular_search_window_rad = *rc::gen::inRange(0, 30) / 100.0;
+  options.branch_and_bound_depth = *rc::gen::inRange(1, 6);
+  const FastCorrelativeScanMatcher matcher(grid, options);
+
+  const double expected = BruteForceBestScore(grid, initial, points, options.linear_search_window_m,
+                                              options.angular_search_window_rad);
+  const std::optional<ScanMatchResult> result = matcher.Match(initial, points, 0.0);
+  RC_ASSERT(result.has_value());
+  // Distinct sums differ by far more than 1e-12 in score.
+  RC_ASSERT(std::abs(result->score - expected) < 1e-12);
+  // The threshold is inclusive of the best score and excludes anything above it.
+  RC_ASSERT(matcher.Match(initial, points, expected - 1e-9).has_value());
+  RC_ASSERT(!matcher.Match(initial, points, expected + 1e-9).has_value());
+}
+
+TEST(FastCorrelativeScanMatcherTest, FindsScanFarFromInitialEstimateInRoom) {
+  const grid::ProbabilityGrid grid = testing::RoomGrid();
+  const Rigid2d truth(-0.4, 0.3, 0.2);
+  const PointCloud points = testing::ScanPoints(testing::Room(), truth);
+  const auto build_start = std::chrono::steady_clock::now();
+  const FastCorrelativeScanMatcher matcher(grid, FastCorrelativeScanMatcherOptions{});
+  const auto match_start = std::chrono::steady_clock::now();
+  // 2.5 m and 0.4 rad away: only a search over the whole window finds it.
+  const std::optional<ScanMatchResult> result =
+      matcher.Match(Rigid2d(truth.x() + 1.5, truth.y() - 2.0, truth.theta() - 0.4), points, 0.55);
+  const auto end = std::chrono::steady_clock::now();
+  std::cout << "Precomputation of " << grid.limits().width() << "x" << grid.limits().height()
+            << " cells: "
+            << std::chrono::duration<double, std::milli>(match_start - build_start).count()
+            << " ms; branch-and-bound match of " << points.size() << " points (7 m, 30 deg): "
+            << std::chrono::duration<double, std::milli>(end - match_start).count() << " ms\n";
+  ASSERT_TRUE(result.has_value());
+  EXPECT_LT((result->pose.translation() - truth.translation()).norm(), 0.06) << result->pose;
+  EXPECT_LT(std::abs(geometry::NormalizeAngle(result->pose.theta() - truth.theta())), 0.01);
+  EXPECT_GT(result->score, 0.7);
+
+  const std::optional<ScanMatchResult> global = matcher.MatchFullSubmap(points, 0.55);
+  ASSERT_TRUE(global.has_value());
+  EXPECT_LT((global->pose.translation() - truth.translation()).norm(), 0.06) << global->pose;
+}
+
+TEST(FastCorrelativeScanMatcherTest, RejectsPoorMatchesAndInvalidOptions) {
+  const grid::ProbabilityGrid grid = testing::RoomGrid();
+  const FastCorrelativeScanMatcher matcher(grid, FastCorrelativeScanMatcherOptions{});
+  // A scan of a different room (a small square) does not match well anywhere.
+  std::vector<testing::Segment> other;
+  testing::AddBox(-0.7, -0.7, 0.7, 0.7, &other);
+  EXPECT_FALSE(matcher.Match(Rigid2d(), testing::ScanPoints(other, Rigid2d()), 0.7).has_value());
+  EXPECT_FALSE(matcher.Match(Rigid2d(), {}, 0.0).has_value());
+  FastCorrelativeScanMatcherOptions options;
+  options.branch_and_bound_depth = 0;
+  EXPECT_THROW(FastCorrelativeScanMatcher(grid, options), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace scout::slam

@@ -1,0 +1,90 @@
+#include "scout/slam/real_time_correlative_scan_matcher.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "scout/grid/probability_values.h"
+#include "scout/slam/fast_correlative_scan_matcher.h"
+
+namespace scout::slam {
+namespace {
+
+void CheckOption(bool ok, const char* name, double value, const char* expected) {
+  if (!ok) {
+    throw std::invalid_argument(std::string("real_time_correlative_scan_matcher.") + name +
+                                " must be " + expected + ", got " + std::to_string(value));
+  }
+}
+
+}  // namespace
+
+void Validate(const RealTimeCorrelativeScanMatcherOptions& options) {
+  CheckOption(options.linear_search_window_m >= 0.0, "linear_search_window_m",
+              options.linear_search_window_m, ">= 0");
+  CheckOption(options.angular_search_window_rad >= 0.0 &&
+                  options.angular_search_window_rad <= std::numbers::pi,
+              "angular_search_window_rad", options.angular_search_window_rad, "in [0, pi]");
+  CheckOption(options.translation_delta_cost_weight >= 0.0, "translation_delta_cost_weight",
+              options.translation_delta_cost_weight, ">= 0");
+  CheckOption(options.rotation_delta_cost_weight >= 0.0, "rotation_delta_cost_weight",
+              options.rotation_delta_cost_weight, ">= 0");
+}
+
+RealTimeCorrelativeScanMatcher::RealTimeCorrelativeScanMatcher(
+    const RealTimeCorrelativeScanMatcherOptions& options)
+    : options_(options) {
+  Validate(options);
+}
+
+ScanMatchResult RealTimeCorrelativeScanMatcher::Match(
+    const geometry::Rigid2d& initial_pose_estimate, const PointCloud& points,
+    const grid::ProbabilityGrid& grid) const {
+  ScanMatchResult best{initial_pose_estimate, 0.0};
+  if (points.empty()) return best;
+  const grid::MapLimits& limits = grid.limits();
+  const double resolution = limits.resolution();
+  double max_range_m = 0.0;
+  for (const Eigen::Vector2d& p : points) max_range_m = std::max(max_range_m, p.norm());
+  const double angle_step = AngularSearchStep(max_range_m, resolution);
+  const int num_angles_each_side =
+      static_cast<int>(std::ceil(options_.angular_search_window_rad / angle_step));
+  const int linear_bound =
+      static_cast<int>(std::ceil(options_.linear_search_window_m / resolution));
+  const auto probability = [&grid](const grid::CellIndex& cell) {
+    const uint16_t v = grid.value(cell);
+    // Unknown counts as free: a scan must be pulled onto observed walls.
+    return v == grid::kUnknownValue ? grid::kMinProbability : grid::ValueToProbability(v);
+  };
+
+  std::vector<grid::CellIndex> cells(points.size());
+  for (int k = -num_angles_each_side; k <= num_angles_each_side; ++k) {
+    const double delta_angle = k * angle_step;
+    const geometry::Rigid2d rotated(initial_pose_estimate.translation(),
+                                    initial_pose_estimate.theta() + delta_angle);
+    // Discretize once per angle; translations only shift cell indices.
+    for (size_t i = 0; i < points.size(); ++i)
+      cells[i] = limits.CellContaining(rotated * points[i]);
+    for (int x = -linear_bound; x <= linear_bound; ++x) {
+      for (int y = -linear_bound; y <= linear_bound; ++y) {
+        double sum = 0.0;
+        for (const grid::CellIndex& cell : cells) sum += probability({cell.x + x, cell.y + y});
+        const double squared_shift_m2 = resolution * resolution * (x * x + y * y);
+        const double score =
+            sum / static_cast<double>(points.size()) *
+            std::exp(-(options_.translation_delta_cost_weight * squared_shift_m2 +
+                       options_.rotation_delta_cost_weight * delta_angle * delta_angle));
+        if (score > best.score) {
+          best.score = score;
+          best.pose = geometry::Rigid2d(rotated.translation() + resolution * Eigen::Vector2d(x, y),
+                                        rotated.theta());
+        }
+      }
+    }
+  }
+  return best;
+}
+
+}  // namespace scout::slam

@@ -1,0 +1,142 @@
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <stdexcept>
+
+#include "scout/slam/ceres_scan_matcher.h"
+#include "scout/slam/point_cloud.h"
+#include "scout/slam/real_time_correlative_scan_matcher.h"
+#include "scout/slam/test_scene.h"
+
+namespace scout::slam {
+namespace {
+
+using geometry::Rigid2d;
+
+double AngleError(const Rigid2d& a, const Rigid2d& b) {
+  return std::abs(geometry::NormalizeAngle(a.theta() - b.theta()));
+}
+
+TEST(PointCloudTest, TransformAndVoxelFilter) {
+  const PointCloud points = {{1.0, 0.0}, {1.01, 0.01}, {2.0, 0.0}, {-0.01, -0.01}};
+  const PointCloud moved = TransformPointCloud(points, Rigid2d(1.0, 2.0, std::numbers::pi / 2));
+  EXPECT_NEAR(moved[0].x(), 1.0, 1e-12);
+  EXPECT_NEAR(moved[0].y(), 3.0, 1e-12);
+  const PointCloud filtered = VoxelFilter(points, 0.1);
+  ASSERT_EQ(filtered.size(), 3u);  // the first two share a voxel; the first is kept
+  EXPECT_EQ(filtered[0], points[0]);
+  EXPECT_EQ(filtered[2], points[3]);
+  EXPECT_THROW(VoxelFilter(points, 0.0), std::invalid_argument);
+}
+
+TEST(PointCloudTest, AdaptiveVoxelFilterKeepsAtLeastMinPointsAndDropsFarOnes) {
+  PointCloud points;
+  for (int i = 0; i < 1000; ++i) points.push_back({0.01 * i, 0.0});  // a 10 m line
+  points.push_back({60.0, 0.0});
+  AdaptiveVoxelFilterOptions options;
+  const PointCloud filtered = AdaptiveVoxelFilter(points, options);
+  EXPECT_GE(filtered.size(), 200u);
+  EXPECT_LT(filtered.size(), 400u);  // coarsened as far as allowed, within ~10 %
+  for (const Eigen::Vector2d& p : filtered) EXPECT_LE(p.norm(), 50.0);
+  options.min_num_points = 2000;  // more than exist: everything in range is kept
+  EXPECT_EQ(AdaptiveVoxelFilter(points, options).size(), 1000u);
+  options.max_length_m = -1.0;
+  EXPECT_THROW(AdaptiveVoxelFilter(points, options), std::invalid_argument);
+}
+
+TEST(CeresScanMatcherTest, RecoversKnownOffsetOnRoomGrid) {
+  const grid::ProbabilityGrid grid = testing::RoomGrid();
+  const Rigid2d truth(-0.4, 0.3, 0.2);
+  const PointCloud points = testing::ScanPoints(testing::Room(), truth);
+  const Rigid2d initial(truth.x() + 0.07, truth.y() - 0.05, truth.theta() + 0.05);
+  // The priors only regularise here: the scan alone must pull the pose back.
+  CeresScanMatcherOptions options;
+  options.occupied_space_weight = 20.0;
+  options.translation_weight = 0.1;
+  options.rotation_weight = 0.1;
+  const CeresScanMatcher matcher(options);
+  const auto start = std::chrono::steady_clock::now();
+  const Rigid2d result = matcher.Match(initial.translation(), initial, points, grid);
+  const double ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  std::cout << "Ceres match of " << points.size() << " points: " << ms << " ms\n";
+  EXPECT_LT((result.translation() - truth.translation()).norm(), 0.015) << result;
+  EXPECT_LT(AngleError(result, truth), 0.005) << result;
+}
+
+TEST(CeresScanMatcherTest, DefaultPriorsHoldAPoseTheScanAgreesWith) {
+  const grid::ProbabilityGrid grid = testing::RoomGrid();
+  const Rigid2d truth(0.3, -0.2, -0.4);
+  const PointCloud points = testing::ScanPoints(testing::Room(), truth);
+  const CeresScanMatcher matcher(CeresScanMatcherOptions{});
+  const Rigid2d result = matcher.Match(truth.translation(), truth, points, grid);
+  EXPECT_LT((result.translation() - truth.translation()).norm(), 0.01) << result;
+  EXPECT_LT(AngleError(result, truth), 0.005) << result;
+  // An empty scan leaves the estimate alone.
+  const Rigid2d unchanged = matcher.Match({1.0, 1.0}, truth, {}, grid);
+  EXPECT_EQ(unchanged.translation(), truth.translation());
+}
+
+TEST(CeresScanMatcherTest, RejectsInvalidOptions) {
+  CeresScanMatcherOptions options;
+  options.max_num_iterations = 0;
+  EXPECT_THROW(CeresScanMatcher{options}, std::invalid_argument);
+  options = {};
+  options.occupied_space_weight = std::nan("");
+  EXPECT_THROW(CeresScanMatcher{options}, std::invalid_argument);
+}
+
+TEST(RealTimeCorrelativeScanMatcherTest, RecoversOffsetWithinWindow) {
+  const grid::ProbabilityGrid grid = testing::RoomGrid();
+  const Rigid2d truth(-0.4, 0.3, 0.2);
+  const PointCloud points = testing::ScanPoints(testing::Room(), truth);
+  const Rigid2d initial(truth.x() + 0.08, truth.y() - 0.07, truth.theta() - 0.2);
+  const RealTimeCorrelativeScanMatcher matcher(RealTimeCorrelativeScanMatcherOptions{});
+  const auto start = std::chrono::steady_clock::now();
+  const ScanMatchResult result = matcher.Match(initial, points, grid);
+  const double ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  std::cout << "Real-time correlative match of " << points.size() << " points: " << ms << " ms\n";
+  // Within one cell and about one angular step of the truth.
+  EXPECT_LT((result.pose.translation() - truth.translation()).norm(), 0.05) << result.pose;
+  EXPECT_LT(AngleError(result.pose, truth), 0.01) << result.pose;
+  EXPECT_GT(result.score, 0.6);
+  // The refined pose must score better than the initial estimate.
+  const ScanMatchResult at_initial =
+      RealTimeCorrelativeScanMatcher({0.0, 0.0, 0.1, 0.1}).Match(initial, points, grid);
+  EXPECT_EQ(at_initial.pose.translation(), initial.translation());
+  EXPECT_LT(at_initial.score, result.score - 0.1);
+}
+
+TEST(RealTimeCorrelativeScanMatcherTest, ThenCeresRefinesBelowACell) {
+  const grid::ProbabilityGrid grid = testing::RoomGrid();
+  const Rigid2d truth(0.7, -0.9, 2.5);
+  const PointCloud points = testing::ScanPoints(testing::Room(), truth);
+  const Rigid2d initial(truth.x() - 0.09, truth.y() + 0.06, truth.theta() + 0.25);
+  const ScanMatchResult coarse =
+      RealTimeCorrelativeScanMatcher(RealTimeCorrelativeScanMatcherOptions{})
+          .Match(initial, points, grid);
+  const Rigid2d fine = CeresScanMatcher(CeresScanMatcherOptions{})
+                           .Match(coarse.pose.translation(), coarse.pose, points, grid);
+  EXPECT_LT((fine.translation() - truth.translation()).norm(), 0.03)
+      << fine << " from " << coarse.pose;
+  EXPECT_LT(AngleError(fine, truth), 0.01) << fine;
+}
+
+TEST(RealTimeCorrelativeScanMatcherTest, EmptyScanAndInvalidOptions) {
+  const grid::ProbabilityGrid grid = testing::RoomGrid();
+  const Rigid2d initial(0.1, 0.2, 0.3);
+  const ScanMatchResult result =
+      RealTimeCorrelativeScanMatcher(RealTimeCorrelativeScanMatcherOptions{})
+          .Match(initial, {}, grid);
+  EXPECT_EQ(result.pose.translation(), initial.translation());
+  EXPECT_EQ(result.score, 0.0);
+  RealTimeCorrelativeScanMatcherOptions options;
+  options.angular_search_window_rad = 4.0;
+  EXPECT_THROW(RealTimeCorrelativeScanMatcher{options}, std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace scout::slam
