@@ -1,0 +1,149 @@
+#include "scout/explore/mean_shift.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <numeric>
+#include <unordered_map>
+
+#include "scout/explore/option_check.h"
+
+namespace scout::explore {
+
+void Validate(const MeanShiftOptions& o) {
+  CheckAtLeast("mean_shift", "bandwidth_m", o.bandwidth_m, 0.0, /*strict=*/true);
+  CheckAtLeast("mean_shift", "seed_bin_m", o.seed_bin_m, 0.0);
+  CheckAtLeast("mean_shift", "convergence_m", o.convergence_m, 0.0, /*strict=*/true);
+  CheckAtLeast("mean_shift", "max_iterations", o.max_iterations, 1.0);
+}
+
+namespace {
+
+int64_t Key(int64_t ix, int64_t iy) { return (ix << 32) ^ (iy & 0xffffffff); }
+
+// Points bucketed in square cells of side 'cell_m' for radius queries with
+// radius <= cell_m (only the 3x3 block around a position can hold neighbours).
+class HashGrid {
+ public:
+  HashGrid(const std::vector<Eigen::Vector2d>& points, double cell_m)
+      : points_(points), cell_m_(cell_m) {
+    for (int i = 0; i < static_cast<int>(points.size()); ++i) {
+      buckets_[KeyOf(points[i])].push_back(i);
+    }
+  }
+  template <typename Visit>
+  void ForEachWithin(const Eigen::Vector2d& p, double radius_m, Visit&& visit) const {
+    const int64_t cx = Floor(p.x()), cy = Floor(p.y());
+    const double r2 = radius_m * radius_m;
+    for (int64_t y = cy - 1; y <= cy + 1; ++y) {
+      for (int64_t x = cx - 1; x <= cx + 1; ++x) {
+        const auto it = buckets_.find(Key(x, y));
+        if (it == buckets_.end()) continue;
+        for (int i : it->second) {
+          if ((points_[i] - p).squaredNorm() <= r2) visit(i);
+        }
+      }
+    }
+  }
+
+ private:
+  int64_t Floor(double v) const { return static_cast<int64_t>(std::floor(v / cell_m_)); }
+  int64_t KeyOf(const Eigen::Vector2d& p) const { return Key(Floor(p.x()), Floor(p.y())); }
+
+  const std::vector<Eigen::Vector2d>& points_;
+  double cell_m_;
+  std::unordered_map<int64_t, std::vector<int>> buckets_;
+};
+
+std::vector<Eigen::Vector2d> Seeds(const std::vector<Eigen::Vector2d>& points, double bin_m) {
+  if (bin_m <= 0.0) return points;
+  struct Bin {
+    int64_t ix, iy;
+    Eigen::Vector2d sum = Eigen::Vector2d::Zero();
+    int n = 0;
+  };
+  std::unordered_map<int64_t, Bin> bins;
+  for (const Eigen::Vector2d& p : points) {
+    const int64_t ix = static_cast<int64_t>(std::floor(p.x() / bin_m));
+    const int64_t iy = static_cast<int64_t>(std::floor(p.y() / bin_m));
+    Bin& b = bins.try_emplace(Key(ix, iy), Bin{ix, iy}).first->second;
+    b.sum += p, ++b.n;
+  }
+  std::vector<const Bin*> ordered;
+  for (const auto& [key, bin] : bins) ordered.push_back(&bin);
+  // Hash order is not portable; sort for deterministic output.
+  std::sort(ordered.begin(), ordered.end(), [](const Bin* a, const Bin* b) {
+    return a->iy != b->iy ? a->iy < b->iy : a->ix < b->ix;
+  });
+  std::vector<Eigen::Vector2d> seeds;
+  for (const Bin* b : ordered) seeds.push_back(b->sum / b->n);
+  return seeds;
+}
+
+}  // namespace
+
+MeanShiftClusters MeanShift(const std::vector<Eigen::Vector2d>& points,
+                            const MeanShiftOptions& options) {
+  Validate(options);
+  MeanShiftClusters out;
+  if (points.empty()) return out;
+  const double h = options.bandwidth_m;
+  const HashGrid grid(points, h);
+
+  // Shift every seed to its mode; remember how many points support the mode.
+  struct Mode {
+    Eigen::Vector2d position;
+    int support;
+  };
+  std::vector<Mode> modes;
+  for (Eigen::Vector2d x : Seeds(points, options.seed_bin_m)) {
+    int support = 0;
+    for (int it = 0; it < options.max_iterations; ++it) {
+      Eigen::Vector2d sum = Eigen::Vector2d::Zero();
+      int n = 0;
+      grid.ForEachWithin(x, h, [&](int i) { sum += points[i], ++n; });
+      if (n == 0) break;
+      const Eigen::Vector2d next = sum / n;
+      const double shift = (next - x).norm();
+      x = next, support = n;
+      if (shift < options.convergence_m) break;
+    }
+    modes.push_back({x, support});
+  }
+
+  // Denser modes absorb the modes within one bandwidth (stable: ties keep seed order).
+  std::stable_sort(modes.begin(), modes.end(),
+                   [](const Mode& a, const Mode& b) { return a.support > b.support; });
+  for (const Mode& m : modes) {
+    bool near_kept = false;
+    for (const Eigen::Vector2d& c : out.centres) {
+      if ((c - m.position).squaredNorm() < h * h) {
+        near_kept = true;
+        break;
+      }
+    }
+    if (!near_kept) out.centres.push_back(m.position);
+  }
+
+  // Nearest centre per point: centres are >= h apart, so one found within h in
+  // the 3x3 block is the nearest; otherwise scan all centres.
+  const HashGrid centre_grid(out.centres, h);
+  out.label.resize(points.size());
+  for (size_t i = 0; i < points.size(); ++i) {
+    int best = -1;
+    double best_d2 = std::numeric_limits<double>::infinity();
+    const auto consider = [&](int c) {
+      const double d2 = (out.centres[c] - points[i]).squaredNorm();
+      if (d2 < best_d2 || (d2 == best_d2 && c < best)) best_d2 = d2, best = c;
+    };
+    centre_grid.ForEachWithin(points[i], h, consider);
+    if (best < 0) {
+      for (int c = 0; c < static_cast<int>(out.centres.size()); ++c) consider(c);
+    }
+    out.label[i] = best;
+  }
+  return out;
+}
+
+}  // namespace scout::explore

@@ -1,0 +1,163 @@
+#include "scout/explore/navigation_points.h"
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <limits>
+
+#include "scout/explore/option_check.h"
+
+namespace scout::explore {
+
+void Validate(const NavigationPointOptions& o) {
+  Validate(o.mean_shift);
+  CheckAtLeast("navigation_points", "connectivity_margin_m", o.connectivity_margin_m, 0.0);
+  CheckAtLeast("navigation_points", "info_radius_m", o.info_radius_m, 0.0);
+  CheckAtLeast("navigation_points", "info_multiplier", o.info_multiplier, 0.0);
+  CheckAtLeast("navigation_points", "hysteresis_radius_m", o.hysteresis_radius_m, 0.0);
+  CheckAtLeast("navigation_points", "hysteresis_gain", o.hysteresis_gain, 0.0);
+}
+
+double UnknownAreaWithin(const PlanningMap& map, const Eigen::Vector2d& p, double radius_m,
+                         bool outside_map_is_unknown) {
+  const grid::MapLimits& limits = map.limits();
+  const grid::CellIndex centre = limits.CellContaining(p);
+  const int r = static_cast<int>(std::ceil(radius_m / limits.resolution())) + 1;
+  const double r2 = radius_m * radius_m;
+  int64_t unknown = 0;
+  for (int y = centre.y - r; y <= centre.y + r; ++y) {
+    for (int x = centre.x - r; x <= centre.x + r; ++x) {
+      const grid::CellIndex c{x, y};
+      if ((limits.CellCenter(c) - p).squaredNorm() > r2) continue;
+      if (!limits.Contains(c)) {
+        unknown += outside_map_is_unknown;
+      } else {
+        unknown += map.state(limits.FlatIndex(c)) == grid::CellState::kUnknown;
+      }
+    }
+  }
+  return static_cast<double>(unknown) * limits.resolution() * limits.resolution();
+}
+
+std::vector<int> SplitByConnectivity(const PlanningMap& map,
+                                     const std::vector<Eigen::Vector2d>& points, double margin_m) {
+  std::vector<int> label(points.size(), -1);
+  if (points.empty()) return label;
+  const grid::MapLimits& limits = map.limits();
+  // Window: the points' bounding box plus the margin, clipped to the map.
+  Eigen::Vector2d lo = points[0], hi = points[0];
+  for (const Eigen::Vector2d& p : points) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  const Eigen::Vector2d m(margin_m, margin_m);
+  grid::CellIndex a = limits.CellContaining(lo - m), b = limits.CellContaining(hi + m);
+  a = {std::max(a.x, 0), std::max(a.y, 0)};
+  b = {std::min(b.x, limits.width() - 1), std::min(b.y, limits.height() - 1)};
+  const int w = b.x - a.x + 1, h = b.y - a.y + 1;
+  const auto open = [&](const grid::CellIndex& c) {
+    return map.state(limits.FlatIndex(c)) != grid::CellState::kOccupied;
+  };
+
+  std::vector<int> region(w > 0 && h > 0 ? static_cast<size_t>(w) * h : 0, -1);
+  int next = 0;
+  std::deque<grid::CellIndex> queue;
+  for (size_t i = 0; i < points.size(); ++i) {
+    const grid::CellIndex c = limits.CellContaining(points[i]);
+    const bool in_window = c.x >= a.x && c.y >= a.y && c.x <= b.x && c.y <= b.y;
+    if (!in_window || !open(c)) {
+      label[i] = next++;
+      continue;
+    }
+    int& seed = region[(c.y - a.y) * w + (c.x - a.x)];
+    if (seed < 0) {
+      // Flood the seed's region once; later points in it just read the label.
+      seed = next++;
+      queue.push_back(c);
+      while (!queue.empty()) {
+        const grid::CellIndex u = queue.front();
+        queue.pop_front();
+        for (int k = 0; k < 4; ++k) {
+          const grid::CellIndex v{u.x + kNeighbourOffsets[k][0], u.y + kNeighbourOffsets[k][1]};
+          if (v.x < a.x || v.y < a.y || v.x > b.x || v.y > b.y || !open(v)) continue;
+          int& rv = region[(v.y - a.y) * w + (v.x - a.x)];
+          if (rv < 0) rv = seed, queue.push_back(v);
+        }
+      }
+    }
+    label[i] = seed;
+  }
+  return label;
+}
+
+std::vector<NavigationPoint> ComputeNavigationPoints(
+    const PlanningMap& map, const PathDistanceField& distances,
+    const std::vector<Eigen::Vector2d>& frontier, const Eigen::Vector2d& robot,
+    const std::optional<Eigen::Vector2d>& current_goal, const NavigationPointOptions& options,
+    NavigationPointStats* stats) {
+  Validate(options);
+  NavigationPointStats local_stats;
+  NavigationPointStats& st = stats ? *stats : local_stats;
+  st = {};
+  std::vector<NavigationPoint> result;
+  if (frontier.empty()) return result;
+
+  const MeanShiftClusters clusters = MeanShift(frontier, options.mean_shift);
+  st.clusters = static_cast<int>(clusters.centres.size());
+  std::vector<std::vector<int>> members(clusters.centres.size());
+  for (size_t i = 0; i < frontier.size(); ++i) members[clusters.label[i]].push_back(i);
+
+  const double snap = map.options().goal_snap_radius_m;
+  for (size_t k = 0; k < members.size(); ++k) {
+    std::vector<Eigen::Vector2d> points;
+    for (int i : members[k]) points.push_back(frontier[i]);
+    const std::vector<int> component =
+        SplitByConnectivity(map, points, options.connectivity_margin_m);
+    const int num_components =
+        points.empty() ? 0 : *std::max_element(component.begin(), component.end()) + 1;
+    st.components += num_components;
+
+    // Per component: its size and its point nearest to the robot by path.
+    struct Best {
+      int index = -1;
+      double path = std::numeric_limits<double>::infinity();
+      double straight = std::numeric_limits<double>::infinity();
+      int size = 0;
+    };
+    std::vector<Best> best(num_components);
+    for (size_t i = 0; i < points.size(); ++i) {
+      Best& b = best[component[i]];
+      ++b.size;
+      const auto reached = distances.NearestReached(points[i], snap);
+      if (!reached) continue;
+      const double straight = (points[i] - robot).norm();
+      if (reached->distance_m < b.path ||
+          (reached->distance_m == b.path && straight < b.straight)) {
+        b = {static_cast<int>(i), reached->distance_m, straight, b.size};
+      }
+    }
+    for (const Best& b : best) {
+      if (b.index < 0) {
+        ++st.unreachable_components;
+        continue;
+      }
+      NavigationPoint np;
+      np.position = points[b.index];
+      np.cost_m = b.path;
+      np.info_gain_m2 = UnknownAreaWithin(map, np.position, options.info_radius_m,
+                                          options.outside_map_is_unknown);
+      if (current_goal && (np.position - *current_goal).norm() <= options.hysteresis_radius_m) {
+        np.info_gain_m2 *= options.hysteresis_gain;
+      }
+      np.revenue = options.info_multiplier * np.info_gain_m2 - np.cost_m;
+      np.cluster = static_cast<int>(k);
+      np.component_size = b.size;
+      result.push_back(np);
+    }
+  }
+  std::stable_sort(result.begin(), result.end(),
+                   [](const NavigationPoint& a, const NavigationPoint& b) {
+                     if (a.revenue != b.revenue) return a.revenue > b.revenue;
+                     return a.cost_m < b.cost_m;
+                   });
+  return result;
+}
+
+}  // namespace scout::explore

@@ -1,0 +1,87 @@
+#ifndef SCOUT_EXPLORE_NAVIGATION_POINTS_H_
+#define SCOUT_EXPLORE_NAVIGATION_POINTS_H_
+
+#include <Eigen/Core>
+#include <optional>
+#include <vector>
+
+#include "scout/explore/mean_shift.h"
+#include "scout/explore/path_distance_field.h"
+#include "scout/explore/planning_map.h"
+
+namespace scout::explore {
+
+// Clustering with reachability and Umari-style revenue (ALGORITHMS §6).
+struct NavigationPointOptions {
+  MeanShiftOptions mean_shift;
+  // The connectivity split looks for paths within this margin (metres) around
+  // the bounding box of a cluster's points: "connected" means connected
+  // nearby. A global flood fill would join every pair of frontiers the robot
+  // reached, since the robot itself connects them.
+  double connectivity_margin_m = 1.0;
+  // info_gain = unknown area (m²) within this radius of the point.
+  double info_radius_m = 1.0;
+  // Cells outside the map are never observed: count them as unknown.
+  bool outside_map_is_unknown = true;
+  // revenue = info_multiplier · info_gain [m²] − path cost [m].
+  double info_multiplier = 3.0;
+  // Points within this radius (metres) of the current goal get their info gain
+  // multiplied by hysteresis_gain, so the robot does not switch goals for a
+  // marginally better one (rrt_exploration's defaults).
+  double hysteresis_radius_m = 3.0;
+  double hysteresis_gain = 2.0;
+};
+
+// Throws std::invalid_argument naming the key of a bad value.
+void Validate(const NavigationPointOptions& options);
+
+struct NavigationPoint {
+  // One of the input frontier points (never a centroid), global frame.
+  Eigen::Vector2d position;
+  // Path distance from the robot over the inflated map, metres.
+  double cost_m = 0.0;
+  // Unknown area around the point (after hysteresis), m².
+  double info_gain_m2 = 0.0;
+  double revenue = 0.0;
+  // Index of the mean-shift cluster, and the frontier points in its component.
+  int cluster = -1;
+  int component_size = 0;
+};
+
+struct NavigationPointStats {
+  int clusters = 0;
+  // Components after the connectivity split, and those dropped because none
+  // of their points has a path from the robot.
+  int components = 0;
+  int unreachable_components = 0;
+};
+
+// Returns one navigation point per reachable connected component of every
+// mean-shift cluster of 'frontier', best revenue first. The navigation point of
+// a component is its point with the least path distance from the robot (ties:
+// nearer in a straight line, then input order); points without a path, i.e. no
+// reached cell within goal_snap_radius_m, are never chosen, and a component
+// without any reachable point yields nothing. 'distances' must come from
+// 'map'. 'current_goal' enables hysteresis.
+std::vector<NavigationPoint> ComputeNavigationPoints(
+    const PlanningMap& map, const PathDistanceField& distances,
+    const std::vector<Eigen::Vector2d>& frontier, const Eigen::Vector2d& robot,
+    const std::optional<Eigen::Vector2d>& current_goal, const NavigationPointOptions& options,
+    NavigationPointStats* stats = nullptr);
+
+// Returns, for each point of one cluster, a component label (0, 1, ...) such
+// that two points share a label iff a 4-connected path of non-occupied cells
+// joins their cells within the window described above. A point whose cell is
+// occupied or outside the map is a component of its own. 4-connectivity: a
+// diagonal chain of occupied cells is a wall and must not leak.
+std::vector<int> SplitByConnectivity(const PlanningMap& map,
+                                     const std::vector<Eigen::Vector2d>& points, double margin_m);
+
+// Returns the unknown area in m² of cells whose centres lie within 'radius_m'
+// of 'p'.
+double UnknownAreaWithin(const PlanningMap& map, const Eigen::Vector2d& p, double radius_m,
+                         bool outside_map_is_unknown);
+
+}  // namespace scout::explore
+
+#endif  // SCOUT_EXPLORE_NAVIGATION_POINTS_H_

@@ -1,0 +1,182 @@
+#include "scout/explore/navigation_points.h"
+
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include <algorithm>
+#include <set>
+
+#include "scout/explore/test_maps.h"
+
+namespace scout::explore {
+namespace {
+
+using testing::MapBuilder;
+
+bool Contains(const std::vector<Eigen::Vector2d>& set, const Eigen::Vector2d& p) {
+  return std::any_of(set.begin(), set.end(), [&](const auto& q) { return (q - p).norm() < 1e-9; });
+}
+
+// A room, a two-cell wall with a gap of 'gap_cells' rows, and a frontier
+// (x = 40) beyond it facing unknown space.
+MapBuilder GapMap(int gap_cells) {
+  MapBuilder b(60, 40);
+  b.Wall(0, 0, 59, 39).Fill(1, 1, 58, 38, grid::CellState::kUnknown);
+  b.Free(1, 1, 40, 38).Wall(29, 1, 30, 38);
+  b.Free(29, 20 - gap_cells / 2, 30, 20 - gap_cells / 2 + gap_cells - 1);
+  return b;
+}
+
+TEST(NavigationPointsTest, FrontierBehindTooNarrowGapYieldsNoPoint) {
+  // 0.3 m gap: the 0.4 m inflation closes it.
+  const MapBuilder narrow = GapMap(3);
+  const PlanningMap map(narrow.map(), TraversabilityOptions{});
+  const Eigen::Vector2d robot = narrow.At(10, 20);
+  const PathDistanceField field(map, robot);
+  ASSERT_TRUE(field.start().has_value());
+  const auto frontier = narrow.FrontierPoints();
+  ASSERT_FALSE(frontier.empty());
+  NavigationPointStats stats;
+  EXPECT_TRUE(ComputeNavigationPoints(map, field, frontier, robot, {}, {}, &stats).empty());
+  EXPECT_GT(stats.unreachable_components, 0);
+
+  // 1.2 m gap: the same frontier becomes reachable.
+  const MapBuilder wide = GapMap(12);
+  const PlanningMap wide_map(wide.map(), TraversabilityOptions{});
+  const PathDistanceField wide_field(wide_map, robot);
+  const auto points =
+      ComputeNavigationPoints(wide_map, wide_field, wide.FrontierPoints(), robot, {}, {});
+  ASSERT_FALSE(points.empty());
+  for (const NavigationPoint& p : points) EXPECT_NEAR(p.position.x(), 4.05, 1e-9);
+}
+
+// Open space below (robot), a frontier row at y = 30 facing unknown space,
+// and a wall at x = 30 rising from y = 15 through the frontier into the unknown.
+MapBuilder SplitMap() {
+  MapBuilder b(60, 50);
+  b.Wall(0, 0, 59, 49).Free(1, 1, 58, 30).Fill(1, 31, 58, 48, grid::CellState::kUnknown);
+  b.Wall(30, 15, 30, 48);
+  return b;
+}
+
+TEST(NavigationPointsTest, FrontierSplitByWallGivesTwoPointsNeverTheCentre) {
+  const MapBuilder b = SplitMap();
+  std::vector<Eigen::Vector2d> frontier;
+  for (int x = 24; x <= 36; ++x) {
+    if (x != 30) frontier.push_back(b.At(x, 30));
+  }
+  // Mean-shift alone makes one cluster whose centre lies in the wall.
+  const MeanShiftClusters clusters = MeanShift(frontier, {});
+  ASSERT_EQ(clusters.centres.size(), 1u);
+  EXPECT_EQ(b.map().at(b.map().limits.CellContaining(clusters.centres[0])),
+            grid::CellState::kOccupied);
+
+  const PlanningMap map(b.map(), TraversabilityOptions{});
+  const Eigen::Vector2d robot = b.At(10, 7);
+  const PathDistanceField field(map, robot);
+  NavigationPointStats stats;
+  const auto points = ComputeNavigationPoints(map, field, frontier, robot, {}, {}, &stats);
+  EXPECT_EQ(stats.clusters, 1);
+  EXPECT_EQ(stats.components, 2);
+  ASSERT_EQ(points.size(), 2u);
+  const double wall_x = b.At(30, 0).x();
+  EXPECT_NE(points[0].position.x() < wall_x, points[1].position.x() < wall_x);
+  for (const NavigationPoint& p : points) {
+    EXPECT_TRUE(Contains(frontier, p.position));
+    EXPECT_EQ(p.component_size, 6);
+    EXPECT_TRUE(std::isfinite(p.cost_m));
+  }
+  // The left point is the frontier point nearest the robot by path: x = 24
+  // (x = 26..29 lie in the wall's inflation band; from (10, 7) the octile
+  // path to x = 24 is 14√2 + 9 cells, to x = 25 it is 15√2 + 8).
+  const auto& left = points[0].position.x() < wall_x ? points[0] : points[1];
+  EXPECT_NEAR(left.position.x(), b.At(24, 30).x(), 1e-9);
+}
+
+// A corridor with the robot in the middle: its left end opens into a large
+// unknown area, its right end into a six-column unknown pocket. Same path cost.
+TEST(NavigationPointsTest, RevenuePrefersLargerUnknownAreaAtEqualCost) {
+  MapBuilder b(80, 30);
+  b.Wall(0, 0, 79, 29)
+      .Fill(1, 1, 78, 28, grid::CellState::kUnknown)
+      .Wall(11, 1, 78, 9)
+      .Wall(11, 20, 78, 28)
+      .Free(11, 10, 69, 19);
+  b.Wall(76, 10, 78, 19);  // pocket = x 70..75 stays unknown
+  const PlanningMap map(b.map(), TraversabilityOptions{});
+  const Eigen::Vector2d robot = b.At(40, 15);
+  const PathDistanceField field(map, robot);
+  const auto points = ComputeNavigationPoints(map, field, b.FrontierPoints(), robot, {}, {});
+  ASSERT_GE(points.size(), 2u);
+  const NavigationPoint& first = points.front();
+  const NavigationPoint& last = points.back();
+  EXPECT_LT(first.position.x(), robot.x());
+  EXPECT_GT(last.position.x(), robot.x());
+  EXPECT_NEAR(first.cost_m, last.cost_m, 0.15);
+  EXPECT_GT(first.info_gain_m2, 2.0 * last.info_gain_m2);
+  EXPECT_GT(first.revenue, last.revenue);
+
+  // Hysteresis: with the current goal at the pocket, the pocket wins.
+  const auto sticky =
+      ComputeNavigationPoints(map, field, b.FrontierPoints(), robot, last.position, [] {
+        NavigationPointOptions o;
+        o.hysteresis_gain = 10.0;
+        return o;
+      }());
+  EXPECT_GT(sticky.front().position.x(), robot.x());
+}
+
+TEST(NavigationPointsTest, ConnectivityLeaksNeitherThroughDiagonalWalls) {
+  MapBuilder b(20, 20, 0.1, grid::CellState::kFree);
+  for (int i = 0; i < 20; ++i) b.Wall(i, i, i, i);  // a diagonal chain of occupied cells
+  const PlanningMap map(b.map(), TraversabilityOptions{});
+  const auto label = SplitByConnectivity(map, {b.At(3, 10), b.At(10, 3), b.At(4, 12)}, 1.0);
+  EXPECT_NE(label[0], label[1]);
+  EXPECT_EQ(label[0], label[2]);
+}
+
+TEST(NavigationPointsTest, OptionsAreValidatedByName) {
+  NavigationPointOptions o;
+  o.mean_shift.bandwidth_m = 0.0;
+  try {
+    Validate(o);
+    FAIL() << "expected std::invalid_argument";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("bandwidth_m"), std::string::npos);
+  }
+  o = {};
+  o.info_radius_m = -1;
+  EXPECT_THROW(Validate(o), std::invalid_argument);
+}
+
+// Random rooms: every navigation point is an input frontier point with a path
+// from the robot, and the hash-grid mean-shift matches a brute-force one.
+RC_GTEST_PROP(NavigationPointsProperty, PointsAreReachableFrontierPoints, ()) {
+  MapBuilder b(40, 30);
+  b.Wall(0, 0, 39, 29).Free(1, 1, 38, 28);
+  const int blocks = *rc::gen::inRange(0, 8);
+  for (int i = 0; i < blocks; ++i) {
+    const int x = *rc::gen::inRange(1, 36), y = *rc::gen::inRange(1, 26);
+    const int w = *rc::gen::inRange(1, 10), h = *rc::gen::inRange(1, 10);
+    const bool wall = *rc::gen::arbitrary<bool>();
+    b.Fill(x, y, x + w, y + h, wall ? grid::CellState::kOccupied : grid::CellState::kUnknown);
+  }
+  const PlanningMap map(b.map(), testing::SmallRobot());
+  const Eigen::Vector2d robot = b.At(*rc::gen::inRange(1, 39), *rc::gen::inRange(1, 29));
+  RC_PRE(map.Traversable(map.limits().CellContaining(robot)));
+  const PathDistanceField field(map, robot);
+  const auto frontier = b.FrontierPoints();
+  const auto points = ComputeNavigationPoints(map, field, frontier, robot, {}, {});
+  std::set<std::pair<int, int>> seen;
+  for (const NavigationPoint& p : points) {
+    RC_ASSERT(Contains(frontier, p.position));
+    const auto reached = field.NearestReached(p.position, map.options().goal_snap_radius_m);
+    RC_ASSERT(reached.has_value());
+    RC_ASSERT(std::abs(reached->distance_m - p.cost_m) < 1e-4);
+    const grid::CellIndex c = map.limits().CellContaining(p.position);
+    RC_ASSERT(seen.insert({c.x, c.y}).second);
+  }
+}
+
+}  // namespace
+}  // namespace scout::explore

@@ -1,0 +1,52 @@
+#ifndef SCOUT_EXPLORE_PATH_DISTANCE_FIELD_H_
+#define SCOUT_EXPLORE_PATH_DISTANCE_FIELD_H_
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <vector>
+
+#include "scout/explore/planning_map.h"
+
+namespace scout::explore {
+
+// Path distance from the robot to every cell over a PlanningMap: one Dijkstra
+// (8-connected, steps of 1 and sqrt 2 cells, same step rule as the A* planner)
+// gives the cost of every navigation point at once.
+class PathDistanceField {
+ public:
+  static constexpr float kUnreachable = std::numeric_limits<float>::infinity();
+
+  // Starts at the robot's cell; when that cell is not traversable (the robot
+  // stands in the inflated band), at the nearest traversable cell within the
+  // inflation radius, as the frontier detector seeds its WFD (ALGORITHMS §2).
+  // With no such cell every distance is kUnreachable.
+  PathDistanceField(const PlanningMap& map, const Eigen::Vector2d& robot);
+
+  // Returns the path distance in metres to the cell (kUnreachable if none).
+  float at(int64_t flat) const { return distance_m_[flat]; }
+  // As above; kUnreachable outside the map.
+  float at(const grid::CellIndex& cell) const {
+    return limits_.Contains(cell) ? distance_m_[limits_.FlatIndex(cell)] : kUnreachable;
+  }
+  const std::optional<grid::CellIndex>& start() const { return start_; }
+
+  // Returns the least distance over the cells within 'radius_m' of 'p' (the cell
+  // containing 'p' always counts), and that cell; nothing when none is reached.
+  // The radius absorbs the rounding between a submap's lattice and the map's.
+  struct Reached {
+    float distance_m;
+    grid::CellIndex cell;
+  };
+  std::optional<Reached> NearestReached(const Eigen::Vector2d& p, double radius_m) const;
+
+ private:
+  grid::MapLimits limits_;
+  std::optional<grid::CellIndex> start_;
+  std::vector<float> distance_m_;
+};
+
+}  // namespace scout::explore
+
+#endif  // SCOUT_EXPLORE_PATH_DISTANCE_FIELD_H_

@@ -1,0 +1,133 @@
+#include "scout/explore/planning_map.h"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "scout/explore/option_check.h"
+#include "scout/grid/distance_transform.h"
+#include "scout/grid/inflation.h"
+
+namespace scout::explore {
+
+void Validate(const TraversabilityOptions& o) {
+  CheckAtLeast("traversability", "robot_radius_m", o.robot_radius_m, 0.0);
+  CheckAtLeast("traversability", "safety_margin_m", o.safety_margin_m, 0.0);
+  CheckAtLeast("traversability", "goal_snap_radius_m", o.goal_snap_radius_m, 0.0);
+}
+
+PlanningMap::PlanningMap(const grid::OccupancyMap& map, const TraversabilityOptions& options,
+                         bool with_clearance)
+    : limits_(map.limits), options_(options), states_(map.cells) {
+  Validate(options_);
+  if (states_.size() != static_cast<size_t>(limits_.num_cells())) {
+    throw std::invalid_argument("PlanningMap: " + std::to_string(states_.size()) +
+                                " cells for a grid of " + std::to_string(limits_.num_cells()));
+  }
+  // The same inflation as the frontier detector's, so a frontier point that
+  // WFD reached is not blocked here by a different rounding.
+  blocked_ = grid::InflateOccupied(states_, limits_, options_.inflation_radius_m());
+  traversable_.resize(states_.size());
+  for (size_t i = 0; i < states_.size(); ++i) {
+    const bool passable = states_[i] == grid::CellState::kFree ||
+                          (options_.unknown_traversable && states_[i] == grid::CellState::kUnknown);
+    traversable_[i] = passable && !blocked_[i];
+  }
+  if (with_clearance) {
+    std::vector<uint8_t> occupied(states_.size());
+    for (size_t i = 0; i < states_.size(); ++i) {
+      occupied[i] = states_[i] == grid::CellState::kOccupied;
+    }
+    clearance_m_ = grid::SquaredDistanceToNearestSite(occupied, limits_.width(), limits_.height());
+    const float res = static_cast<float>(limits_.resolution());
+    for (float& c : clearance_m_) c = std::sqrt(c) * res;
+  }
+}
+
+bool PlanningMap::StepAllowed(const grid::CellIndex& from, int k) const {
+  const auto& d = kNeighbourOffsets[k];
+  if (!Traversable({from.x + d[0], from.y + d[1]})) return false;
+  if (k < 4) return true;
+  return Traversable({from.x + d[0], from.y}) && Traversable({from.x, from.y + d[1]});
+}
+
+std::vector<grid::CellIndex> CellsWithin(const grid::MapLimits& limits, const Eigen::Vector2d& p,
+                                         double radius_m) {
+  std::vector<grid::CellIndex> cells;
+  const grid::CellIndex centre = limits.CellContaining(p);
+  const int r = static_cast<int>(std::ceil(radius_m / limits.resolution())) + 1;
+  const double r2 = radius_m * radius_m;
+  for (int y = centre.y - r; y <= centre.y + r; ++y) {
+    for (int x = centre.x - r; x <= centre.x + r; ++x) {
+      const grid::CellIndex c{x, y};
+      if (!limits.Contains(c)) continue;
+      if (c == centre || (limits.CellCenter(c) - p).squaredNorm() <= r2) cells.push_back(c);
+    }
+  }
+  return cells;
+}
+
+std::optional<grid::CellIndex> PlanningMap::NearestTraversable(const Eigen::Vector2d& p,
+                                                               double radius_m) const {
+  std::optional<grid::CellIndex> best;
+  double best_d2 = std::numeric_limits<double>::infinity();
+  for (const grid::CellIndex& c : CellsWithin(limits_, p, radius_m)) {
+    if (!traversable(limits_.FlatIndex(c))) continue;
+    const double d2 = (limits_.CellCenter(c) - p).squaredNorm();
+    if (d2 < best_d2) best_d2 = d2, best = c;  // row-major scan: first is lowest index
+  }
+  return best;
+}
+
+template <typename Visit>
+void PlanningMap::ForEachCellOnSegment(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
+                                       Visit&& visit) const {
+  // Amanatides & Woo grid traversal in cell units.
+  const double res = limits_.resolution();
+  const Eigen::Vector2d pa = (a - limits_.origin()) / res;
+  const Eigen::Vector2d pb = (b - limits_.origin()) / res;
+  grid::CellIndex c{static_cast<int>(std::floor(pa.x())), static_cast<int>(std::floor(pa.y()))};
+  const grid::CellIndex end{static_cast<int>(std::floor(pb.x())),
+                            static_cast<int>(std::floor(pb.y()))};
+  const Eigen::Vector2d d = pb - pa;
+  const int sx = d.x() > 0 ? 1 : -1;
+  const int sy = d.y() > 0 ? 1 : -1;
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  const double tdx = d.x() != 0 ? std::abs(1.0 / d.x()) : kInf;
+  const double tdy = d.y() != 0 ? std::abs(1.0 / d.y()) : kInf;
+  double tx = d.x() != 0 ? ((sx > 0 ? c.x + 1 - pa.x() : pa.x() - c.x) * tdx) : kInf;
+  double ty = d.y() != 0 ? ((sy > 0 ? c.y + 1 - pa.y() : pa.y() - c.y) * tdy) : kInf;
+  if (!visit(c)) return;
+  const int steps = std::abs(end.x - c.x) + std::abs(end.y - c.y);
+  for (int i = 0; i < steps && !(c == end); ++i) {
+    if (std::abs(tx - ty) < 1e-12) {
+      // Through a corner: both side cells are touched.
+      if (!visit(grid::CellIndex{c.x + sx, c.y}) || !visit(grid::CellIndex{c.x, c.y + sy})) return;
+      c.x += sx, c.y += sy, tx += tdx, ty += tdy;
+      ++i;
+    } else if (tx < ty) {
+      c.x += sx, tx += tdx;
+    } else {
+      c.y += sy, ty += tdy;
+    }
+    if (!visit(c)) return;
+  }
+}
+
+bool PlanningMap::SegmentTraversable(const Eigen::Vector2d& a, const Eigen::Vector2d& b) const {
+  bool ok = true;
+  ForEachCellOnSegment(a, b, [&](const grid::CellIndex& c) { return ok = Traversable(c); });
+  return ok;
+}
+
+float PlanningMap::SegmentClearance(const Eigen::Vector2d& a, const Eigen::Vector2d& b) const {
+  float lowest = std::numeric_limits<float>::infinity();
+  ForEachCellOnSegment(a, b, [&](const grid::CellIndex& c) {
+    if (limits_.Contains(c)) lowest = std::min(lowest, clearance_m_[limits_.FlatIndex(c)]);
+    return true;
+  });
+  return lowest;
+}
+
+}  // namespace scout::explore
