@@ -156,6 +156,21 @@ TEST(DiffDriveRobot, StopsAtTheWallAndCountsOneCollision) {
   EXPECT_EQ(robot.collisions(), 2);
 }
 
+TEST(DiffDriveRobot, LongStepsDoNotTunnelThroughThinWalls) {
+  grid::OccupancyMap map = MakeRoom();
+  // A wall one cell thick at x in [2.5, 2.55).
+  FillBox(geometry::Box2d(Eigen::Vector2d(2.5, 0), Eigen::Vector2d(2.55, 10)),
+          grid::CellState::kOccupied, &map);
+  const DiffDriveOptions options = InstantOptions();
+  DiffDriveRobot robot(map, options, geometry::Rigid2d(2, 5, 0.1));
+  // One 2 s step would end at x ~ 3, clear of the wall on its far side.
+  EXPECT_TRUE(robot.Step(0.5, 0.0, 2.0).blocked);
+  EXPECT_LE(robot.pose().x(), 2.5 - options.radius_m);
+  EXPECT_GE(robot.pose().x(), 2.5 - options.radius_m - 0.25 * 0.05);
+  EXPECT_NEAR(robot.pose().theta(), 0.1, 1e-12);
+  EXPECT_EQ(robot.collisions(), 1);
+}
+
 TEST(DiffDriveRobot, RandomDrivingNeverOverlapsAnObstacle) {
   grid::OccupancyMap map = MakeRoom();
   // Pillars and a single-cell post to graze at every angle.

@@ -14,10 +14,12 @@ namespace scout::sim {
 //   translation sd = trans_per_trans * |dtrans| + trans_per_rot * |drot|
 //   rotation sd    = rot_per_rot * |drot|       + rot_per_trans * |dtrans|
 // The noise is independent per sample, so drift grows like the square root of
-// the distance and depends on the sample spacing: the defaults are set for
-// 50 Hz samples at 0.5 m/s (1 cm apart), where 10 m of straight driving gives
-// a translation sd of 0.15 m (1.5 %) and a heading sd of 0.95 deg
-// (odometry_model_test measures both).
+// the distance and DEPENDS ON THE SAMPLE SPACING (sd per sample is linear in
+// the motion, as in the book). The defaults are set for 50 Hz samples at
+// 0.5 m/s (1 cm apart) and 1 rad/s; odometry_model_test measures, over 400
+// seeds: 10 m straight gives an along-track sd of 0.125 m (1.25 %), a heading
+// sd of 0.98 deg and a position rms error of 0.16 m (1.6 %); one turn in place
+// gives a heading sd of 2.0 deg.
 struct OdometryNoiseOptions {
   double trans_per_trans = 0.4;   // m of sd per m travelled
   double trans_per_rot = 0.005;   // m of sd per rad turned

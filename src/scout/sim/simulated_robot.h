@@ -21,7 +21,8 @@ struct SimulatedRobotOptions {
   OdometryNoiseOptions odometry;
   // Scans per second (the paper's Hokuyo class runs at 10 Hz).
   double scan_rate_hz = 10.0;
-  // Odometry samples per second; the odometry noise is applied per sample.
+  // Odometry samples per second. The noise is drawn per sample, so a different
+  // rate changes the drift (see OdometryNoiseOptions, calibrated for 50 Hz).
   double odometry_rate_hz = 50.0;
   // Heading at the world's start position.
   double start_heading_rad = 0.0;
