@@ -80,41 +80,6 @@ std::optional<grid::CellIndex> PlanningMap::NearestTraversable(const Eigen::Vect
   return best;
 }
 
-template <typename Visit>
-void PlanningMap::ForEachCellOnSegment(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
-                                       Visit&& visit) const {
-  // Amanatides & Woo grid traversal in cell units.
-  const double res = limits_.resolution();
-  const Eigen::Vector2d pa = (a - limits_.origin()) / res;
-  const Eigen::Vector2d pb = (b - limits_.origin()) / res;
-  grid::CellIndex c{static_cast<int>(std::floor(pa.x())), static_cast<int>(std::floor(pa.y()))};
-  const grid::CellIndex end{static_cast<int>(std::floor(pb.x())),
-                            static_cast<int>(std::floor(pb.y()))};
-  const Eigen::Vector2d d = pb - pa;
-  const int sx = d.x() > 0 ? 1 : -1;
-  const int sy = d.y() > 0 ? 1 : -1;
-  constexpr double kInf = std::numeric_limits<double>::infinity();
-  const double tdx = d.x() != 0 ? std::abs(1.0 / d.x()) : kInf;
-  const double tdy = d.y() != 0 ? std::abs(1.0 / d.y()) : kInf;
-  double tx = d.x() != 0 ? ((sx > 0 ? c.x + 1 - pa.x() : pa.x() - c.x) * tdx) : kInf;
-  double ty = d.y() != 0 ? ((sy > 0 ? c.y + 1 - pa.y() : pa.y() - c.y) * tdy) : kInf;
-  if (!visit(c)) return;
-  const int steps = std::abs(end.x - c.x) + std::abs(end.y - c.y);
-  for (int i = 0; i < steps && !(c == end); ++i) {
-    if (std::abs(tx - ty) < 1e-12) {
-      // Through a corner: both side cells are touched.
-      if (!visit(grid::CellIndex{c.x + sx, c.y}) || !visit(grid::CellIndex{c.x, c.y + sy})) return;
-      c.x += sx, c.y += sy, tx += tdx, ty += tdy;
-      ++i;
-    } else if (tx < ty) {
-      c.x += sx, tx += tdx;
-    } else {
-      c.y += sy, ty += tdy;
-    }
-    if (!visit(c)) return;
-  }
-}
-
 bool PlanningMap::SegmentTraversable(const Eigen::Vector2d& a, const Eigen::Vector2d& b) const {
   bool ok = true;
   ForEachCellOnSegment(a, b, [&](const grid::CellIndex& c) { return ok = Traversable(c); });

@@ -3,7 +3,9 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <cmath>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -86,11 +88,14 @@ class PlanningMap {
   // Smallest clearance over the cells the segment a-b passes through.
   float SegmentClearance(const Eigen::Vector2d& a, const Eigen::Vector2d& b) const;
 
- private:
+  // Calls visit(CellIndex) for every cell the segment a-b passes through, in
+  // order, until visit returns false (exact grid traversal; through a cell
+  // corner both side cells are visited). Cells may lie outside the map.
   template <typename Visit>
   void ForEachCellOnSegment(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
                             Visit&& visit) const;
 
+ private:
   grid::MapLimits limits_;
   TraversabilityOptions options_;
   std::vector<grid::CellState> states_;
@@ -98,6 +103,41 @@ class PlanningMap {
   std::vector<uint8_t> traversable_;
   std::vector<float> clearance_m_;
 };
+
+template <typename Visit>
+void PlanningMap::ForEachCellOnSegment(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
+                                       Visit&& visit) const {
+  // Amanatides & Woo grid traversal in cell units.
+  const double res = limits_.resolution();
+  const Eigen::Vector2d pa = (a - limits_.origin()) / res;
+  const Eigen::Vector2d pb = (b - limits_.origin()) / res;
+  grid::CellIndex c{static_cast<int>(std::floor(pa.x())), static_cast<int>(std::floor(pa.y()))};
+  const grid::CellIndex end{static_cast<int>(std::floor(pb.x())),
+                            static_cast<int>(std::floor(pb.y()))};
+  const Eigen::Vector2d d = pb - pa;
+  const int sx = d.x() > 0 ? 1 : -1;
+  const int sy = d.y() > 0 ? 1 : -1;
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  const double tdx = d.x() != 0 ? std::abs(1.0 / d.x()) : kInf;
+  const double tdy = d.y() != 0 ? std::abs(1.0 / d.y()) : kInf;
+  double tx = d.x() != 0 ? ((sx > 0 ? c.x + 1 - pa.x() : pa.x() - c.x) * tdx) : kInf;
+  double ty = d.y() != 0 ? ((sy > 0 ? c.y + 1 - pa.y() : pa.y() - c.y) * tdy) : kInf;
+  if (!visit(c)) return;
+  const int steps = std::abs(end.x - c.x) + std::abs(end.y - c.y);
+  for (int i = 0; i < steps && !(c == end); ++i) {
+    if (std::abs(tx - ty) < 1e-12) {
+      // Through a corner: both side cells are touched.
+      if (!visit(grid::CellIndex{c.x + sx, c.y}) || !visit(grid::CellIndex{c.x, c.y + sy})) return;
+      c.x += sx, c.y += sy, tx += tdx, ty += tdy;
+      ++i;
+    } else if (tx < ty) {
+      c.x += sx, tx += tdx;
+    } else {
+      c.y += sy, ty += tdy;
+    }
+    if (!visit(c)) return;
+  }
+}
 
 }  // namespace scout::explore
 

@@ -1,0 +1,179 @@
+#include "scout/explore/path_planner.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <utility>
+
+#include "scout/explore/option_check.h"
+
+namespace scout::explore {
+
+void Validate(const PathPlannerOptions& o) {
+  CheckAtLeast("path_planner", "clearance_weight", o.clearance_weight, 0.0);
+  CheckAtLeast("path_planner", "clearance_band_m", o.clearance_band_m, 0.0, /*strict=*/true);
+}
+
+PathPlanner::PathPlanner(const PathPlannerOptions& options) : options_(options) {
+  Validate(options_);
+}
+
+namespace {
+
+constexpr float kInf = std::numeric_limits<float>::infinity();
+constexpr uint8_t kNoParent = 255;
+
+double Octile(int dx, int dy) {
+  dx = std::abs(dx), dy = std::abs(dy);
+  return std::max(dx, dy) + (M_SQRT2 - 1.0) * std::min(dx, dy);
+}
+
+double PolylineLength(const std::vector<Eigen::Vector2d>& points) {
+  double length = 0.0;
+  for (size_t i = 1; i < points.size(); ++i) length += (points[i] - points[i - 1]).norm();
+  return length;
+}
+
+}  // namespace
+
+std::optional<PlannedPath> PathPlanner::Plan(const PlanningMap& map, const Eigen::Vector2d& start,
+                                             const Eigen::Vector2d& goal) const {
+  const bool penalise = options_.clearance_weight > 0.0;
+  if (penalise && !map.has_clearance()) {
+    throw std::invalid_argument("PathPlanner: clearance_weight > 0 needs a map with clearance");
+  }
+  const grid::MapLimits& limits = map.limits();
+  const auto start_cell = map.NearestTraversable(start, map.options().inflation_radius_m());
+  if (!start_cell) return std::nullopt;
+  const double res = limits.resolution();
+  const double snap = map.options().goal_snap_radius_m;
+  const grid::CellIndex goal_cell = limits.CellContaining(goal);
+  const auto is_goal = [&](const grid::CellIndex& c) {
+    return c == goal_cell || (limits.CellCenter(c) - goal).squaredNorm() <= snap * snap;
+  };
+  // Admissible: the octile/Euclidean ratio is at most 1.0824, and any goal
+  // cell lies within 'snap' of the goal.
+  const double slack_cells = 1.0824 * snap / res + 1.0;
+  const auto heuristic = [&](const grid::CellIndex& c) {
+    const double h = Octile(c.x - goal_cell.x, c.y - goal_cell.y);
+    return static_cast<float>(snap > 0.0 ? std::max(0.0, h - slack_cells) : h);
+  };
+
+  std::vector<float> g(limits.num_cells(), kInf);
+  std::vector<uint8_t> parent(limits.num_cells(), kNoParent);
+  std::vector<uint8_t> closed(limits.num_cells(), 0);
+  using Entry = std::pair<float, int64_t>;  // (f, flat)
+  std::vector<Entry> open;
+  const auto later = [](const Entry& a, const Entry& b) { return a.first > b.first; };
+  const int64_t s = limits.FlatIndex(*start_cell);
+  g[s] = 0.0f;
+  open.push_back({heuristic(*start_cell), s});
+  const float kStep[8] = {
+      1, 1, 1, 1, float(M_SQRT2), float(M_SQRT2), float(M_SQRT2), float(M_SQRT2)};
+  PlannedPath path;
+  int64_t reached = -1;
+  while (!open.empty()) {
+    std::pop_heap(open.begin(), open.end(), later);
+    const int64_t u = open.back().second;
+    open.pop_back();
+    if (closed[u]) continue;
+    closed[u] = 1;
+    ++path.expansions;
+    const grid::CellIndex cu = limits.CellOfFlatIndex(u);
+    if (is_goal(cu)) {
+      reached = u;
+      break;
+    }
+    for (int k = 0; k < 8; ++k) {
+      if (!map.StepAllowed(cu, k)) continue;
+      const grid::CellIndex cv{cu.x + kNeighbourOffsets[k][0], cu.y + kNeighbourOffsets[k][1]};
+      const int64_t v = limits.FlatIndex(cv);
+      if (closed[v]) continue;
+      const float gv = g[u] + kStep[k] * StepFactor(map, v);
+      if (gv < g[v]) {
+        g[v] = gv, parent[v] = static_cast<uint8_t>(k);
+        open.push_back({gv + heuristic(cv), v});
+        std::push_heap(open.begin(), open.end(), later);
+      }
+    }
+  }
+  if (reached < 0) return std::nullopt;
+
+  // Walk back through the parents; the raw path is start, cells..., end.
+  std::vector<Eigen::Vector2d> raw;
+  std::vector<double> cost;
+  for (int64_t c = reached;;) {
+    const grid::CellIndex ci = limits.CellOfFlatIndex(c);
+    raw.push_back(limits.CellCenter(ci));
+    cost.push_back(g[c] * res);
+    if (c == s) break;
+    const auto& d = kNeighbourOffsets[parent[c]];
+    path.cell_path_length_m += (parent[c] < 4 ? 1.0 : M_SQRT2) * res;
+    c = limits.FlatIndex({ci.x - d[0], ci.y - d[1]});
+  }
+  std::reverse(raw.begin(), raw.end());
+  std::reverse(cost.begin(), cost.end());
+  // End exactly at the goal when it lies in the reached cell.
+  if (limits.CellOfFlatIndex(reached) == goal_cell) raw.back() = goal;
+  // Begin at the robot; from inside the inflated band it first moves
+  // straight to the start cell, which shortcutting must not skip.
+  size_t first_free = 0;
+  if (*start_cell == limits.CellContaining(start)) {
+    raw.front() = start;
+  } else {
+    raw.insert(raw.begin(), start);
+    cost.insert(cost.begin(), 0.0);
+    first_free = 1;
+  }
+  path.points = options_.shortcut ? Shortcut(map, raw, cost, first_free) : raw;
+  path.length_m = PolylineLength(path.points);
+  return path;
+}
+
+float PathPlanner::StepFactor(const PlanningMap& map, int64_t flat) const {
+  if (options_.clearance_weight <= 0.0) return 1.0f;
+  const double beyond = map.clearance_m(flat) - map.options().inflation_radius_m();
+  const double closeness = std::max(0.0, 1.0 - beyond / options_.clearance_band_m);
+  return static_cast<float>(1.0 + options_.clearance_weight * closeness);
+}
+
+double PathPlanner::SegmentCost(const PlanningMap& map, const Eigen::Vector2d& a,
+                                const Eigen::Vector2d& b) const {
+  double sum = 0.0;
+  int n = 0;
+  map.ForEachCellOnSegment(a, b, [&](const grid::CellIndex& c) {
+    if (map.limits().Contains(c)) sum += StepFactor(map, map.limits().FlatIndex(c)), ++n;
+    return true;
+  });
+  return (b - a).norm() * (n > 0 ? sum / n : 1.0);
+}
+
+std::vector<Eigen::Vector2d> PathPlanner::Shortcut(const PlanningMap& map,
+                                                   const std::vector<Eigen::Vector2d>& raw,
+                                                   const std::vector<double>& cost,
+                                                   size_t first_free) const {
+  std::vector<Eigen::Vector2d> out(raw.begin(), raw.begin() + first_free + 1);
+  const bool penalise = options_.clearance_weight > 0.0;
+  size_t anchor = first_free;
+  while (anchor + 1 < raw.size()) {
+    // Extend the segment from the anchor while it stays valid (greedy: the
+    // first invalid extension ends it, which keeps the work linear per corner).
+    // Without a penalty a straight segment never costs more than the cells it
+    // replaces, so only line of sight is checked.
+    size_t j = anchor + 1;
+    while (j + 1 < raw.size()) {
+      if (!map.SegmentTraversable(raw[anchor], raw[j + 1])) break;
+      if (penalise &&
+          SegmentCost(map, raw[anchor], raw[j + 1]) > cost[j + 1] - cost[anchor] + 1e-6) {
+        break;
+      }
+      ++j;
+    }
+    out.push_back(raw[j]);
+    anchor = j;
+  }
+  return out;
+}
+
+}  // namespace scout::explore

@@ -1,0 +1,178 @@
+#include "scout/explore/path_planner.h"
+
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "scout/explore/path_distance_field.h"
+#include "scout/explore/test_maps.h"
+
+namespace scout::explore {
+namespace {
+
+using testing::MapBuilder;
+
+TraversabilityOptions PointRobot() {
+  TraversabilityOptions o;
+  o.robot_radius_m = 0.0;
+  o.safety_margin_m = 0.0;
+  o.goal_snap_radius_m = 0.0;
+  return o;
+}
+
+// Brute force: relax every edge until nothing changes (Bellman-Ford), with
+// the planner's rule that a diagonal step needs both orthogonal cells free.
+double BruteForceDistance(const grid::OccupancyMap& m, grid::CellIndex from, grid::CellIndex to) {
+  const int w = m.limits.width(), h = m.limits.height();
+  const auto free = [&](int x, int y) { return m.at({x, y}) == grid::CellState::kFree; };
+  std::vector<double> d(size_t(w) * h, std::numeric_limits<double>::infinity());
+  d[from.y * w + from.x] = 0;
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (int y = 0; y < h; ++y) {
+      for (int x = 0; x < w; ++x) {
+        if (!free(x, y) || !std::isfinite(d[y * w + x])) continue;
+        for (int dx = -1; dx <= 1; ++dx) {
+          for (int dy = -1; dy <= 1; ++dy) {
+            if ((dx == 0 && dy == 0) || !free(x + dx, y + dy)) continue;
+            if (dx != 0 && dy != 0 && (!free(x + dx, y) || !free(x, y + dy))) continue;
+            const double nd = d[y * w + x] + std::hypot(dx, dy);
+            double& t = d[(y + dy) * w + x + dx];
+            if (nd < t - 1e-12) t = nd, changed = true;
+          }
+        }
+      }
+    }
+  }
+  return d[to.y * w + to.x] * m.limits.resolution();
+}
+
+// A serpentine maze: walls at every 4th column, alternately open at the top
+// and the bottom, so the only way through winds up and down.
+MapBuilder Serpentine() {
+  MapBuilder b(41, 21, 0.1, grid::CellState::kFree);
+  b.Wall(0, 0, 40, 0).Wall(0, 20, 40, 20).Wall(0, 0, 0, 20).Wall(40, 0, 40, 20);
+  for (int x = 4, i = 0; x < 40; x += 4, ++i) {
+    if (i % 2 == 0) b.Wall(x, 1, x, 17);  // open at the top (y 18, 19)
+    if (i % 2 == 1) b.Wall(x, 3, x, 19);  // open at the bottom (y 1, 2)
+  }
+  return b;
+}
+
+TEST(PathPlannerTest, FindsTheShortestPathThroughAMaze) {
+  const MapBuilder b = Serpentine();
+  const PlanningMap map(b.map(), PointRobot());
+  const PathPlanner planner(PathPlannerOptions{});
+  const auto path = planner.Plan(map, b.At(2, 2), b.At(38, 18));
+  ASSERT_TRUE(path.has_value());
+  const double truth = BruteForceDistance(b.map(), {2, 2}, {38, 18});
+  EXPECT_NEAR(path->cell_path_length_m, truth, 1e-4);
+  // The maze forces nine crossings of (most of) its height.
+  EXPECT_GT(truth, 9 * 1.4);
+  // The Dijkstra field agrees.
+  const PathDistanceField field(map, b.At(2, 2));
+  EXPECT_NEAR(field.at(grid::CellIndex{38, 18}), truth, 1e-4);
+  // Shortcutting keeps line of sight and never lengthens the path.
+  EXPECT_LE(path->length_m, path->cell_path_length_m + 1e-9);
+  EXPECT_EQ(path->points.front(), b.At(2, 2));
+  EXPECT_EQ(path->points.back(), b.At(38, 18));
+  for (size_t i = 1; i < path->points.size(); ++i) {
+    EXPECT_TRUE(map.SegmentTraversable(path->points[i - 1], path->points[i])) << i;
+  }
+}
+
+TEST(PathPlannerTest, ReturnsNothingWhenTheGoalIsWalledOff) {
+  MapBuilder b(40, 30, 0.1, grid::CellState::kFree);
+  b.Wall(15, 15, 25, 15).Wall(15, 25, 25, 25).Wall(15, 15, 15, 25).Wall(25, 15, 25, 25);
+  const PlanningMap map(b.map(), TraversabilityOptions{});
+  const PathPlanner planner(PathPlannerOptions{});
+  EXPECT_FALSE(planner.Plan(map, b.At(5, 5), b.At(20, 20)).has_value());
+  // Control: the same goal with one side of the box removed is reachable.
+  b.Free(25, 16, 25, 24);
+  const PlanningMap open(b.map(), TraversabilityOptions{});
+  EXPECT_TRUE(planner.Plan(open, b.At(5, 5), b.At(20, 20)).has_value());
+}
+
+TEST(PathPlannerTest, OpenRoomGivesAStraightLine) {
+  MapBuilder b(40, 40, 0.1, grid::CellState::kFree);
+  const PlanningMap map(b.map(), TraversabilityOptions{});
+  const auto path = PathPlanner({}).Plan(map, {0.53, 0.71}, {3.3, 2.9});
+  ASSERT_TRUE(path.has_value());
+  ASSERT_EQ(path->points.size(), 2u);
+  EXPECT_NEAR(path->length_m, (Eigen::Vector2d(3.3, 2.9) - Eigen::Vector2d(0.53, 0.71)).norm(),
+              1e-9);
+}
+
+TEST(PathPlannerTest, UnknownCellsAreTraversableOnlyWhenConfigured) {
+  MapBuilder b(40, 20, 0.1, grid::CellState::kFree);
+  b.Fill(20, 0, 20, 19, grid::CellState::kUnknown);  // an unseen band across the map
+  TraversabilityOptions o = PointRobot();
+  EXPECT_FALSE(PathPlanner({}).Plan(PlanningMap(b.map(), o), b.At(5, 5), b.At(35, 5)));
+  o.unknown_traversable = true;
+  EXPECT_TRUE(PathPlanner({}).Plan(PlanningMap(b.map(), o), b.At(5, 5), b.At(35, 5)));
+}
+
+TEST(PathPlannerTest, StartInsideTheInflatedBandLeavesIt) {
+  MapBuilder b(40, 40, 0.1, grid::CellState::kFree);
+  b.Wall(0, 0, 39, 0);
+  const PlanningMap map(b.map(), TraversabilityOptions{});
+  const Eigen::Vector2d robot = b.At(10, 2);  // 0.2 m from the wall: blocked
+  ASSERT_FALSE(map.Traversable(map.limits().CellContaining(robot)));
+  const auto path = PathPlanner({}).Plan(map, robot, b.At(30, 30));
+  ASSERT_TRUE(path.has_value());
+  EXPECT_EQ(path->points.front(), robot);
+  EXPECT_TRUE(map.Traversable(map.limits().CellContaining(path->points[1])));
+}
+
+TEST(PathPlannerTest, ClearancePenaltyKeepsAwayFromWalls) {
+  // A 3 m wide corridor; start and goal near its lower wall.
+  MapBuilder b(80, 32, 0.1, grid::CellState::kFree);
+  b.Wall(0, 0, 79, 0).Wall(0, 31, 79, 31);
+  const Eigen::Vector2d start = b.At(5, 5), goal = b.At(75, 5);
+  // How far the path gets from the lower wall on its way.
+  const auto farthest = [](const PlannedPath& p) {
+    double y = 0;
+    for (const Eigen::Vector2d& q : p.points) y = std::max(y, q.y());
+    return y;
+  };
+  const PlanningMap map(b.map(), TraversabilityOptions{}, /*with_clearance=*/true);
+  const auto plain = PathPlanner({}).Plan(map, start, goal);
+  PathPlannerOptions careful;
+  careful.clearance_weight = 5.0;
+  careful.clearance_band_m = 0.8;
+  const auto safe = PathPlanner(careful).Plan(map, start, goal);
+  ASSERT_TRUE(plain && safe);
+  EXPECT_LT(farthest(*plain), 0.6);
+  EXPECT_GT(farthest(*safe), 1.1);
+  EXPECT_THROW(PathPlanner(careful).Plan(PlanningMap(b.map(), {}), start, goal),
+               std::invalid_argument);
+}
+
+RC_GTEST_PROP(PathPlannerProperty, MatchesBruteForceOnRandomMazes, ()) {
+  const int w = *rc::gen::inRange(4, 16), h = *rc::gen::inRange(4, 16);
+  MapBuilder b(w, h, 0.1, grid::CellState::kFree);
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      if (*rc::gen::inRange(0, 100) < 30) b.Wall(x, y, x, y);
+    }
+  }
+  const grid::CellIndex s{*rc::gen::inRange(0, w), *rc::gen::inRange(0, h)};
+  const grid::CellIndex t{*rc::gen::inRange(0, w), *rc::gen::inRange(0, h)};
+  b.Free(s.x, s.y, s.x, s.y).Free(t.x, t.y, t.x, t.y);
+  const PlanningMap map(b.map(), PointRobot());
+  const auto path = PathPlanner({}).Plan(map, b.At(s.x, s.y), b.At(t.x, t.y));
+  const double truth = BruteForceDistance(b.map(), s, t);
+  RC_ASSERT(path.has_value() == std::isfinite(truth));
+  if (path) {
+    RC_ASSERT(std::abs(path->cell_path_length_m - truth) < 1e-4);
+    RC_ASSERT(path->length_m <= path->cell_path_length_m + 1e-9);
+    for (size_t i = 1; i < path->points.size(); ++i) {
+      RC_ASSERT(map.SegmentTraversable(path->points[i - 1], path->points[i]));
+    }
+  }
+}
+
+}  // namespace
+}  // namespace scout::explore
