@@ -1,0 +1,113 @@
+#ifndef SCOUT_SLAM_LOCAL_TRAJECTORY_BUILDER_H_
+#define SCOUT_SLAM_LOCAL_TRAJECTORY_BUILDER_H_
+
+#include <optional>
+#include <vector>
+
+#include "scout/events/submap_events.h"
+#include "scout/geometry/rigid_transform.h"
+#include "scout/sensor/laser_scan.h"
+#include "scout/sensor/motion_filter.h"
+#include "scout/sensor/odometry.h"
+#include "scout/slam/ceres_scan_matcher.h"
+#include "scout/slam/point_cloud.h"
+#include "scout/slam/pose_extrapolator.h"
+#include "scout/slam/real_time_correlative_scan_matcher.h"
+#include "scout/slam/submap.h"
+
+namespace scout::slam {
+
+// Every option of local SLAM, with the defaults of ALGORITHMS §7 and
+// Cartographer's 2D trajectory builder.
+struct LocalSlamOptions {
+  // Returns outside [min, max) are dropped; beams without a return become
+  // free-space rays of miss_ray_length_m.
+  sensor::RangeFilterOptions range_filter{
+      .min_range_m = 0.0, .max_range_m = 30.0, .miss_ray_length_m = 5.0};
+  // Voxel edge that thins returns before insertion and matching.
+  double voxel_filter_size_m = 0.025;
+  // Further thinning of the points used for scan matching only.
+  AdaptiveVoxelFilterOptions adaptive_voxel_filter;
+  // Seed Ceres with an exhaustive search around the prediction: on by default
+  // because logs with poor odometry need it (the extrapolation alone can be
+  // several cells off, beyond the reach of the local optimiser).
+  bool use_online_correlative_scan_matching = true;
+  RealTimeCorrelativeScanMatcherOptions real_time_correlative_scan_matcher;
+  CeresScanMatcherOptions ceres_scan_matcher;
+  // Which matched scans are inserted into the submaps.
+  sensor::MotionFilterOptions motion_filter;
+  // Resolution 0.05 m, 70 scans, insertion hit 0.55 / miss 0.49.
+  SubmapOptions submaps;
+};
+
+// Throws std::invalid_argument naming the first invalid option.
+void Validate(const LocalSlamOptions& options);
+
+// What inserting one scan produced; the input of global SLAM.
+struct InsertionResult {
+  double time_s = 0.0;
+  // Robot (= scan origin) pose in the local SLAM frame.
+  geometry::Rigid2d local_pose;
+  // The points scan matching used, in the robot frame (voxel and adaptive
+  // voxel filtered): global SLAM matches them against finished submaps.
+  PointCloud filtered_points;
+  // The submaps this scan was inserted into (oldest first), each with a
+  // snapshot of its grid after the insertion, its local pose, scan origins
+  // and finished flag.
+  std::vector<events::SubmapChanged> insertion_submaps;
+  // Submaps created / finished by this insertion (ids dense from 0).
+  std::vector<events::SubmapId> created_submaps;
+  std::vector<events::SubmapId> finished_submaps;
+};
+
+// Local SLAM (Hess et al. 2016, section IV): predicts each scan's pose from
+// odometry (or constant velocity), refines it against the older active
+// submap (optionally real-time correlative search, then Ceres with priors
+// toward the correlative result or, without it, the prediction), and inserts
+// scans that passed the motion filter into both active submaps.
+class LocalTrajectoryBuilder {
+ public:
+  // Throws std::invalid_argument on invalid options.
+  explicit LocalTrajectoryBuilder(const LocalSlamOptions& options);
+
+  // Feeds one odometry reading (used to predict the pose of later scans).
+  void AddOdometry(const sensor::Odometry& odometry);
+
+  // Matches and (if the motion filter accepts it) inserts 'scan'. Returns
+  // nullopt if the scan was not inserted: no valid returns (all NaN, inf or
+  // out of range), older than the previous scan, or filtered as too similar.
+  std::optional<InsertionResult> AddScan(const sensor::LaserScan& scan);
+
+  // The latest scan-matched pose (local frame), identity before the first scan.
+  const geometry::Rigid2d& last_pose() const { return last_pose_; }
+  const ActiveSubmaps& active_submaps() const { return active_submaps_; }
+
+  // Counters for reports.
+  struct Statistics {
+    int num_scans = 0;
+    int num_empty_scans = 0;
+    int num_out_of_order_scans = 0;
+    int num_matched = 0;
+    int num_inserted = 0;
+    // Time spent in scan matching, summed (ms).
+    double scan_matching_ms = 0.0;
+  };
+  const Statistics& statistics() const { return statistics_; }
+
+ private:
+  geometry::Rigid2d MatchScan(const geometry::Rigid2d& prediction, const PointCloud& points);
+
+  LocalSlamOptions options_;
+  RealTimeCorrelativeScanMatcher real_time_matcher_;
+  CeresScanMatcher ceres_matcher_;
+  sensor::MotionFilter motion_filter_;
+  ActiveSubmaps active_submaps_;
+  PoseExtrapolator extrapolator_;
+  std::optional<double> last_scan_time_s_;
+  geometry::Rigid2d last_pose_;
+  Statistics statistics_;
+};
+
+}  // namespace scout::slam
+
+#endif  // SCOUT_SLAM_LOCAL_TRAJECTORY_BUILDER_H_
