@@ -1,0 +1,101 @@
+#include "scout/explore/goal_policies.h"
+
+#include <gtest/gtest.h>
+
+#include "scout/explore/test_maps.h"
+
+namespace scout::explore {
+namespace {
+
+using testing::MapBuilder;
+
+// Open space below (robot), unknown above y = 30, a wall at x = 30 rising from
+// y = 15 into the unknown, and frontier pieces x 24..29 and 31..36 at y = 30.
+struct SplitScene {
+  MapBuilder b{60, 50};
+  std::vector<Eigen::Vector2d> frontier;
+  SplitScene() {
+    b.Wall(0, 0, 59, 49).Free(1, 1, 58, 30).Fill(1, 31, 58, 48, grid::CellState::kUnknown);
+    b.Wall(30, 15, 30, 48);
+    for (int x = 24; x <= 36; ++x) {
+      if (x != 30) frontier.push_back(b.At(x, 30));
+    }
+  }
+};
+
+std::vector<GoalCandidate> RankWith(std::string_view name, const MapBuilder& b,
+                                    const std::vector<Eigen::Vector2d>& frontier,
+                                    const Eigen::Vector2d& robot) {
+  const PlanningMap map(b.map(), TraversabilityOptions{});
+  const PathDistanceField field(map, robot);
+  const auto policy = MakeGoalPolicy(name, {});
+  PolicyInput in;
+  in.map = &map;
+  in.distances = &field;
+  in.frontier = &frontier;
+  in.robot = robot;
+  return policy->Rank(in);
+}
+
+TEST(GoalPoliciesTest, NearestIsTheStraightLineNearestFrontierPoint) {
+  SplitScene s;
+  const auto goals = RankWith("nearest", s.b, s.frontier, s.b.At(10, 7));
+  ASSERT_EQ(goals.size(), s.frontier.size());
+  // From (10, 7): (24, 30) is at sqrt(14² + 23²) cells, the least.
+  EXPECT_EQ(goals.front().position, s.b.At(24, 30));
+  for (size_t i = 1; i < goals.size(); ++i) EXPECT_GE(goals[i - 1].score, goals[i].score);
+}
+
+TEST(GoalPoliciesTest, MeanShiftCentreLiesInTheWallScoutsPointsDoNot) {
+  SplitScene s;
+  const auto centres = RankWith("meanshift-centres", s.b, s.frontier, s.b.At(10, 7));
+  ASSERT_EQ(centres.size(), 1u);
+  EXPECT_EQ(s.b.map().at(s.b.map().limits.CellContaining(centres[0].position)),
+            grid::CellState::kOccupied);
+  const auto scout = RankWith("scout", s.b, s.frontier, s.b.At(10, 7));
+  ASSERT_EQ(scout.size(), 2u);
+  for (const GoalCandidate& g : scout) {
+    EXPECT_EQ(s.b.map().at(s.b.map().limits.CellContaining(g.position)), grid::CellState::kFree);
+  }
+}
+
+TEST(GoalPoliciesTest, ExploreLiteGoesToTheCentroidOfTheLargestSegmentEvenInAWall) {
+  // A U of frontier cells around a pillar (x 11..13, y 11..16): its centroid
+  // lies inside the pillar. A 3-cell segment elsewhere is below the 0.5 m
+  // minimum size and ignored.
+  MapBuilder b(40, 30, 0.1, grid::CellState::kFree);
+  b.Wall(11, 11, 13, 16);
+  std::vector<Eigen::Vector2d> u;
+  for (int y = 10; y <= 16; ++y) u.push_back(b.At(10, y)), u.push_back(b.At(14, y));
+  for (int x = 11; x <= 13; ++x) u.push_back(b.At(x, 10));
+  Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
+  for (const auto& p : u) centroid += p;
+  centroid /= u.size();
+  std::vector<Eigen::Vector2d> frontier = u;
+  for (int x = 30; x <= 32; ++x) frontier.push_back(b.At(x, 25));
+
+  const auto goals = RankWith("explore-lite", b, frontier, b.At(35, 5));
+  ASSERT_EQ(goals.size(), 1u);
+  EXPECT_NEAR((goals[0].position - centroid).norm(), 0.0, 1e-9);
+  EXPECT_EQ(b.map().at(b.map().limits.CellContaining(goals[0].position)),
+            grid::CellState::kOccupied);
+  // cost = 1e-3 · distance − 1.0 · 17 cells · 0.1 m.
+  const auto segments = FrontierSegments(b.map().limits, frontier, b.At(35, 5));
+  ASSERT_EQ(segments.size(), 2u);
+  EXPECT_EQ(segments[0].cells, 17);
+  EXPECT_NEAR(goals[0].score, -(1e-3 * segments[0].min_distance_m - 1.7), 1e-9);
+}
+
+TEST(GoalPoliciesTest, UnknownNameIsRejectedWithTheChoices) {
+  try {
+    MakeGoalPolicy("frontier-magic", {});
+    FAIL();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("explore-lite"), std::string::npos);
+  }
+  for (const std::string& name : GoalPolicyNames())
+    EXPECT_EQ(MakeGoalPolicy(name, {})->name(), name);
+}
+
+}  // namespace
+}  // namespace scout::explore
