@@ -1,0 +1,304 @@
+#include "scout/io/carmen_log_reader.h"
+
+#include <charconv>
+#include <cmath>
+#include <numbers>
+#include <optional>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "scout/common/error.h"
+#include "scout/io/dataset_warnings.h"
+#include "scout/io/gzip_file.h"
+
+namespace scout::io {
+namespace {
+
+namespace fs = std::filesystem;
+
+// SICK LMS 2xx in cm mode: 81.91 m means "no return"; readings near it are
+// error codes, never real returns.
+constexpr float kSickRangeMaxM = 81.9f;
+// A largest reading repeated this often is a saturation value, not a return.
+constexpr std::size_t kMinSaturatedReadings = 10;
+// Readings within 1 % below the saturation value count as no return too.
+constexpr float kSaturationBand = 0.99f;
+constexpr double kHalfPi = std::numbers::pi / 2.0;
+
+std::vector<std::string_view> SplitFields(std::string_view line) {
+  std::vector<std::string_view> fields;
+  std::size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
+    const std::size_t begin = i;
+    while (i < line.size() && line[i] != ' ' && line[i] != '\t') ++i;
+    if (i > begin) fields.push_back(line.substr(begin, i - begin));
+  }
+  return fields;
+}
+
+// Parses all of 'text' as a number ("nan" and "inf" included).
+std::optional<double> ParseNumber(std::string_view text) {
+  double value = 0.0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc() || end != text.data() + text.size()) return std::nullopt;
+  return value;
+}
+
+std::optional<std::size_t> ParseCount(std::string_view text) {
+  std::size_t value = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc() || end != text.data() + text.size()) return std::nullopt;
+  return value;
+}
+
+// Fills the dataset from one log, line by line. Parse functions return the
+// reason a line is malformed ("expected ..."), or nothing.
+class CarmenParser {
+ public:
+  CarmenParser(const fs::path& path, Dataset* dataset, CarmenLogCounts* counts)
+      : source_(path.string()), dataset_(dataset), counts_(counts), warnings_(&dataset->warnings) {}
+
+  void ParseLine(std::size_t line_number, std::string_view line) {
+    line_number_ = line_number;
+    const std::vector<std::string_view> fields = SplitFields(line);
+    if (fields.empty() || fields[0].front() == '#') {
+      ++counts_->comment_lines;
+      return;
+    }
+    std::optional<std::string> problem;
+    if (fields[0] == "FLASER") {
+      problem = ParseFlaser(fields);
+    } else if (fields[0] == "ROBOTLASER1") {
+      problem = ParseRobotLaser(fields);
+    } else if (fields[0] == "ODOM") {
+      problem = ParseOdom(fields);
+    } else {
+      ++counts_->other_messages[std::string(fields[0])];
+    }
+    if (problem) {
+      ++counts_->malformed_lines;
+      warnings_.Add("malformed lines", Where() + ": malformed " + std::string(fields[0]) +
+                                           " message skipped: " + *problem);
+    }
+  }
+
+  // Called once after the last line.
+  void Finish() {
+    InferFlaserRangeMax();
+    WarnIfTimesCoarse();
+    warnings_.Finish(source_);
+  }
+
+  DatasetWarnings& warnings() { return warnings_; }
+
+ private:
+  std::string Where() const { return source_ + ":" + std::to_string(line_number_); }
+
+  std::optional<std::string> ParseFlaser(const std::vector<std::string_view>& f) {
+    const std::optional<std::size_t> n = f.size() > 1 ? ParseCount(f[1]) : std::nullopt;
+    if (!n) return "expected the beam count as field 2";
+    if (f.size() != *n + 11) {
+      return "expected " + std::to_string(*n + 11) + " fields for " + std::to_string(*n) +
+             " beams (FLASER n r1..rn x y theta odom_x odom_y odom_theta ipc_timestamp "
+             "ipc_hostname logger_timestamp), found " +
+             std::to_string(f.size());
+    }
+    sensor::LaserScan scan;
+    scan.ranges.resize(*n);
+    for (std::size_t k = 0; k < *n; ++k) {
+      const std::optional<double> r = ParseNumber(f[2 + k]);
+      if (!r)
+        return "expected a number as range " + std::to_string(k + 1) + ", found '" +
+               std::string(f[2 + k]) + "'";
+      scan.ranges[k] = static_cast<float>(*r);
+    }
+    double x, y, theta, time;
+    if (auto problem =
+            Numbers(f, {{*n + 2, &x}, {*n + 3, &y}, {*n + 4, &theta}, {*n + 8, &time}})) {
+      return problem;
+    }
+    const std::size_t steps = *n % 2 == 1 ? *n - 1 : *n;
+    scan.time_s = time;
+    scan.angle_min_rad = static_cast<float>(-kHalfPi);
+    scan.angle_increment_rad = steps > 0 ? static_cast<float>(std::numbers::pi / steps) : 0.f;
+    scan.range_max_m = kSickRangeMaxM;  // replaced in InferFlaserRangeMax()
+    if (AddScan(std::move(scan), geometry::Rigid2d(x, y, theta), "FLASER")) {
+      ++counts_->flaser;
+      flaser_scans_.push_back(dataset_->scans.size() - 1);
+    }
+    return std::nullopt;
+  }
+
+  std::optional<std::string> ParseRobotLaser(const std::vector<std::string_view>& f) {
+    const std::optional<std::size_t> n = f.size() > 8 ? ParseCount(f[8]) : std::nullopt;
+    if (!n) return "expected the beam count num_readings as field 9";
+    const std::optional<std::size_t> m = f.size() > *n + 9 ? ParseCount(f[*n + 9]) : std::nullopt;
+    if (!m) return "expected num_remissions as field " + std::to_string(*n + 10);
+    if (f.size() != *n + *m + 24) {
+      return "expected " + std::to_string(*n + *m + 24) + " fields for " + std::to_string(*n) +
+             " beams and " + std::to_string(*m) + " remissions, found " + std::to_string(f.size());
+    }
+    sensor::LaserScan scan;
+    double start_angle, resolution, max_range;
+    if (auto problem = Numbers(f, {{2, &start_angle}, {4, &resolution}, {5, &max_range}})) {
+      return problem;
+    }
+    scan.ranges.resize(*n);
+    for (std::size_t k = 0; k < *n; ++k) {
+      const std::optional<double> r = ParseNumber(f[9 + k]);
+      if (!r)
+        return "expected a number as range " + std::to_string(k + 1) + ", found '" +
+               std::string(f[9 + k]) + "'";
+      scan.ranges[k] = static_cast<float>(*r);
+    }
+    const std::size_t tail = *n + *m + 10;  // first field after the remissions
+    double x, y, theta, time;
+    if (auto problem =
+            Numbers(f, {{tail + 3, &x}, {tail + 4, &y}, {tail + 5, &theta}, {tail + 11, &time}})) {
+      return problem;
+    }
+    scan.time_s = time;
+    scan.angle_min_rad = static_cast<float>(start_angle);
+    scan.angle_increment_rad = static_cast<float>(resolution);
+    scan.range_max_m = static_cast<float>(max_range);
+    if (AddScan(std::move(scan), geometry::Rigid2d(x, y, theta), "ROBOTLASER1")) {
+      ++counts_->robotlaser1;
+    }
+    return std::nullopt;
+  }
+
+  std::optional<std::string> ParseOdom(const std::vector<std::string_view>& f) {
+    if (f.size() != 10) {
+      return "expected 10 fields (ODOM x y theta tv rv accel ipc_timestamp ipc_hostname "
+             "logger_timestamp), found " +
+             std::to_string(f.size());
+    }
+    double x, y, theta, time;
+    if (auto problem = Numbers(f, {{1, &x}, {2, &y}, {3, &theta}, {7, &time}})) return problem;
+    if (!dataset_->odometry.empty() && time < dataset_->odometry.back().time_s) {
+      ++counts_->backwards_odometry;
+      warnings_.Add("odometry messages with backwards time",
+                    Where() + ": ODOM at t=" + std::to_string(time) +
+                        " s is earlier than the previous one (t=" +
+                        std::to_string(dataset_->odometry.back().time_s) +
+                        " s); dropped (expected non-decreasing ipc_timestamp)");
+      return std::nullopt;
+    }
+    dataset_->odometry.push_back({time, geometry::Rigid2d(x, y, theta)});
+    ++counts_->odom;
+    return std::nullopt;
+  }
+
+  // Parses the fields at the given indices as finite numbers (the ranges are
+  // parsed separately because they may be NaN or infinite).
+  std::optional<std::string> Numbers(
+      const std::vector<std::string_view>& f,
+      std::initializer_list<std::pair<std::size_t, double*>> wanted) {
+    for (const auto& [index, value] : wanted) {
+      const std::optional<double> parsed = ParseNumber(f[index]);
+      if (!parsed || !std::isfinite(*parsed)) {
+        return "expected a finite number as field " + std::to_string(index + 1) + ", found '" +
+               std::string(f[index]) + "'";
+      }
+      *value = *parsed;
+    }
+    return std::nullopt;
+  }
+
+  // Appends 'scan' unless it has no beams or goes back in time (warnings).
+  bool AddScan(sensor::LaserScan scan, const geometry::Rigid2d& pose, const char* kind) {
+    if (scan.ranges.empty()) {
+      ++counts_->zero_beam_scans;
+      warnings_.Add("scans without beams",
+                    Where() + ": " + kind + " with 0 beams skipped (expected at least one range)");
+      return false;
+    }
+    if (!dataset_->scans.empty() && scan.time_s < dataset_->scans.back().time_s) {
+      ++counts_->backwards_scans;
+      warnings_.Add("scans with backwards time",
+                    Where() + ": " + kind + " at t=" + std::to_string(scan.time_s) +
+                        " s is earlier than the previous scan (t=" +
+                        std::to_string(dataset_->scans.back().time_s) +
+                        " s); dropped (expected non-decreasing ipc_timestamp)");
+      return false;
+    }
+    dataset_->scans.push_back(std::move(scan));
+    dataset_->scan_poses.push_back(pose);
+    return true;
+  }
+
+  void InferFlaserRangeMax() {
+    float largest = 0.f;
+    std::size_t repeats = 0;
+    for (const std::size_t i : flaser_scans_) {
+      for (const float r : dataset_->scans[i].ranges) {
+        if (!std::isfinite(r) || r < largest) continue;
+        repeats = r == largest ? repeats + 1 : 1;
+        largest = r;
+      }
+    }
+    const float range_max =
+        repeats >= kMinSaturatedReadings ? kSaturationBand * largest : kSickRangeMaxM;
+    for (const std::size_t i : flaser_scans_) dataset_->scans[i].range_max_m = range_max;
+  }
+
+  void WarnIfTimesCoarse() {
+    const std::vector<sensor::LaserScan>& scans = dataset_->scans;
+    std::size_t repeated = 0;
+    for (std::size_t i = 1; i < scans.size(); ++i)
+      repeated += scans[i].time_s == scans[i - 1].time_s;
+    if (scans.size() >= 2 && 2 * repeated >= scans.size()) {
+      dataset_->warnings.push_back(
+          source_ + ": " + std::to_string(repeated) + " of " + std::to_string(scans.size()) +
+          " scans have the same ipc_timestamp as the scan before; the log's times are too "
+          "coarse (or zero) to match scans with odometry by time");
+    }
+  }
+
+  std::string source_;
+  Dataset* dataset_;
+  CarmenLogCounts* counts_;
+  DatasetWarnings warnings_;
+  std::size_t line_number_ = 0;
+  std::vector<std::size_t> flaser_scans_;  // indices into dataset_->scans
+};
+
+}  // namespace
+
+Dataset ReadCarmenLog(const fs::path& path, CarmenLogCounts* counts) {
+  CarmenLogCounts local_counts;
+  if (counts == nullptr) counts = &local_counts;
+  *counts = CarmenLogCounts();
+  Dataset dataset;
+  dataset.name = DatasetName(path);
+  dataset.format = "carmen";
+  CarmenParser parser(path, &dataset, counts);
+  LineReader reader(path);
+  std::string line;
+  while (reader.Next(line)) parser.ParseLine(reader.line_number(), line);
+  const std::string source = path.string();
+  if (!reader.error().empty()) {
+    if (dataset.scans.empty()) {
+      throw InputError(source + ": corrupt or truncated gzip data after line " +
+                       std::to_string(reader.line_number()) + " (" + reader.error() +
+                       ") before any usable scan; expected a complete gzip stream");
+    }
+    dataset.warnings.push_back(source + ": gzip data ends early after line " +
+                               std::to_string(reader.line_number()) + " (" + reader.error() +
+                               "); keeping the " + std::to_string(dataset.scans.size()) +
+                               " scans read up to there");
+  }
+  parser.Finish();
+  if (dataset.scans.empty()) {
+    throw InputError(source + ": no usable laser scan in " + std::to_string(reader.line_number()) +
+                     " lines (expected FLASER or ROBOTLASER1 lines of a CARMEN log; " +
+                     std::to_string(counts->malformed_lines) + " malformed, " +
+                     std::to_string(counts->backwards_scans + counts->zero_beam_scans) +
+                     " scans dropped)");
+  }
+  return dataset;
+}
+
+}  // namespace scout::io

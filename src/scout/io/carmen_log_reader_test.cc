@@ -1,0 +1,263 @@
+#include "scout/io/carmen_log_reader.h"
+
+#include <gtest/gtest.h>
+#include <zlib.h>
+
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+#include <sstream>
+#include <string>
+
+#include "scout/common/error.h"
+#include "scout/grid/test_temp_directory.h"
+
+namespace scout::io {
+namespace {
+
+namespace fs = std::filesystem;
+using grid::TestTempDirectory;
+
+// "FLASER n r.. x y th x y th t host t" with 'n' beams of 'range' metres.
+std::string Flaser(int n, double range, double x, double y, double theta, double time) {
+  std::ostringstream line;
+  line << "FLASER " << n;
+  for (int k = 0; k < n; ++k) line << ' ' << range;
+  line << ' ' << x << ' ' << y << ' ' << theta << ' ' << x << ' ' << y << ' ' << theta << ' '
+       << time << " pippo " << time << '\n';
+  return line.str();
+}
+
+std::string Odom(double x, double y, double theta, double time) {
+  std::ostringstream line;
+  line << "ODOM " << x << ' ' << y << ' ' << theta << " 0 0 0 " << time << " pippo " << time
+       << '\n';
+  return line.str();
+}
+
+// Writes 'content' gzip-compressed to 'path'.
+void WriteGzip(const fs::path& path, const std::string& content) {
+  gzFile file = gzopen(path.c_str(), "wb");
+  ASSERT_NE(file, nullptr);
+  ASSERT_EQ(gzwrite(file, content.data(), static_cast<unsigned>(content.size())),
+            static_cast<int>(content.size()));
+  ASSERT_EQ(gzclose(file), Z_OK);
+}
+
+bool AnyWarningContains(const Dataset& dataset, const std::string& text) {
+  for (const std::string& warning : dataset.warnings) {
+    if (warning.find(text) != std::string::npos) return true;
+  }
+  return false;
+}
+
+std::string ThrownMessage(const fs::path& path) {
+  try {
+    ReadCarmenLog(path);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(no InputError)";
+}
+
+TEST(CarmenLogReader, ReadsFlaserRobotLaserAndOdom) {
+  const TestTempDirectory dir;
+  const std::string log =
+      "# message formats defined: PARAM FLASER ODOM ROBOTLASER1\n"
+      "PARAM robot_use_laser on nohost 0\n" +
+      Odom(0, 0, 0, 0.5) + Flaser(4, 2.5, 1.0, 2.0, 0.5, 1.0) +
+      "ROBOTLASER1 0 -1.5 3.0 0.5 30.0 0.01 0 3 1.0 nan inf 2 7 8 "
+      "9 9 9 3.0 4.0 -0.25 0 0 0 0 0 2.0 host 2.0\n" +
+      Odom(1.0, 0.5, 0.25, 2.5) + Flaser(5, 3.0, 2.0, 2.0, 0.0, 3.0);
+  CarmenLogCounts counts;
+  const Dataset dataset = ReadCarmenLog(dir.Write("lab.log", log), &counts);
+
+  EXPECT_EQ(dataset.name, "lab");
+  EXPECT_EQ(dataset.format, "carmen");
+  EXPECT_TRUE(dataset.warnings.empty()) << dataset.warnings.front();
+  EXPECT_EQ(counts.flaser, 2u);
+  EXPECT_EQ(counts.robotlaser1, 1u);
+  EXPECT_EQ(counts.odom, 2u);
+  EXPECT_EQ(counts.comment_lines, 1u);
+  EXPECT_EQ(counts.other_messages.at("PARAM"), 1u);
+  ASSERT_EQ(dataset.scans.size(), 3u);
+  ASSERT_EQ(dataset.scan_poses.size(), 3u);
+
+  // Even beam count: [-90, 90) deg in steps of 180/n.
+  const sensor::LaserScan& even = dataset.scans[0];
+  EXPECT_DOUBLE_EQ(even.time_s, 1.0);
+  EXPECT_FLOAT_EQ(even.angle_min_rad, static_cast<float>(-std::numbers::pi / 2));
+  EXPECT_FLOAT_EQ(even.angle_increment_rad, static_cast<float>(std::numbers::pi / 4));
+  EXPECT_EQ(even.ranges, std::vector<float>(4, 2.5f));
+  EXPECT_DOUBLE_EQ(dataset.scan_poses[0].x(), 1.0);
+  EXPECT_DOUBLE_EQ(dataset.scan_poses[0].theta(), 0.5);
+  // Odd beam count: [-90, 90] deg, both ends included.
+  EXPECT_FLOAT_EQ(dataset.scans[2].angle_increment_rad, static_cast<float>(std::numbers::pi / 4));
+
+  // ROBOTLASER1: its own angles and range limit; NaN and inf kept; robot pose.
+  const sensor::LaserScan& robot = dataset.scans[1];
+  EXPECT_DOUBLE_EQ(robot.time_s, 2.0);
+  EXPECT_FLOAT_EQ(robot.angle_min_rad, -1.5f);
+  EXPECT_FLOAT_EQ(robot.angle_increment_rad, 0.5f);
+  EXPECT_FLOAT_EQ(robot.range_max_m, 30.f);
+  ASSERT_EQ(robot.ranges.size(), 3u);
+  EXPECT_FLOAT_EQ(robot.ranges[0], 1.f);
+  EXPECT_TRUE(std::isnan(robot.ranges[1]));
+  EXPECT_TRUE(std::isinf(robot.ranges[2]));
+  EXPECT_DOUBLE_EQ(dataset.scan_poses[1].x(), 3.0);
+  EXPECT_DOUBLE_EQ(dataset.scan_poses[1].y(), 4.0);
+  EXPECT_DOUBLE_EQ(dataset.scan_poses[1].theta(), -0.25);
+
+  ASSERT_EQ(dataset.odometry.size(), 2u);
+  EXPECT_DOUBLE_EQ(dataset.odometry[1].time_s, 2.5);
+  EXPECT_DOUBLE_EQ(dataset.odometry[1].pose.y(), 0.5);
+  EXPECT_DOUBLE_EQ(dataset.odometry[1].pose.theta(), 0.25);
+}
+
+TEST(CarmenLogReader, MalformedLineIsSkippedWithAWarningNamingFileAndLine) {
+  const TestTempDirectory dir;
+  const fs::path path = dir.Write(
+      "bad.log", Flaser(3, 1.0, 0, 0, 0, 1.0) + "FLASER 3 1.0 2.0 0 0 0 0 0 0 2.0 h 2.0\n" +
+                     "ODOM 1 2 x 0 0 0 2.5 h 2.5\n" + Flaser(3, 1.0, 0, 0, 0, 3.0));
+  CarmenLogCounts counts;
+  const Dataset dataset = ReadCarmenLog(path, &counts);
+  EXPECT_EQ(dataset.scans.size(), 2u);
+  EXPECT_TRUE(dataset.odometry.empty());
+  EXPECT_EQ(counts.malformed_lines, 2u);
+  EXPECT_TRUE(AnyWarningContains(dataset, path.string() + ":2: malformed FLASER"));
+  EXPECT_TRUE(AnyWarningContains(dataset, "expected 14 fields for 3 beams"));
+  EXPECT_TRUE(AnyWarningContains(dataset, path.string() + ":3: malformed ODOM"));
+  EXPECT_TRUE(AnyWarningContains(dataset, "found 'x'"));
+}
+
+TEST(CarmenLogReader, MessagesGoingBackInTimeAreDroppedPerStream) {
+  const TestTempDirectory dir;
+  const fs::path path =
+      dir.Write("back.log", Flaser(2, 1.0, 0, 0, 0, 1.0) + Odom(0, 0, 0, 5.0) +
+                                Flaser(2, 1.0, 0, 0, 0, 3.0) + Flaser(2, 1.0, 0, 0, 0, 2.0) +
+                                Odom(0, 0, 0, 0.0) + Flaser(2, 1.0, 0, 0, 0, 3.0));
+  CarmenLogCounts counts;
+  const Dataset dataset = ReadCarmenLog(path, &counts);
+  ASSERT_EQ(dataset.scans.size(), 3u);  // equal times are kept
+  EXPECT_DOUBLE_EQ(dataset.scans[1].time_s, 3.0);
+  EXPECT_DOUBLE_EQ(dataset.scans[2].time_s, 3.0);
+  EXPECT_EQ(dataset.odometry.size(), 1u);
+  EXPECT_EQ(counts.backwards_scans, 1u);
+  EXPECT_EQ(counts.backwards_odometry, 1u);
+  EXPECT_TRUE(AnyWarningContains(dataset, path.string() + ":4: FLASER at t=2"));
+  EXPECT_TRUE(AnyWarningContains(dataset, path.string() + ":5: ODOM at t=0"));
+}
+
+TEST(CarmenLogReader, ZeroBeamScansAreSkippedWithAWarning) {
+  const TestTempDirectory dir;
+  const fs::path path =
+      dir.Write("zero.log", Flaser(0, 1.0, 0, 0, 0, 1.0) + Flaser(2, 1.0, 0, 0, 0, 2.0));
+  CarmenLogCounts counts;
+  const Dataset dataset = ReadCarmenLog(path, &counts);
+  EXPECT_EQ(dataset.scans.size(), 1u);
+  EXPECT_EQ(counts.zero_beam_scans, 1u);
+  EXPECT_TRUE(AnyWarningContains(dataset, path.string() + ":1: FLASER with 0 beams"));
+}
+
+TEST(CarmenLogReader, ManyWarningsOfOneKindAreSummarised) {
+  const TestTempDirectory dir;
+  std::string log = Flaser(2, 1.0, 0, 0, 0, 1.0);
+  for (int i = 0; i < 25; ++i) log += "ODOM 1 2\n";
+  const Dataset dataset = ReadCarmenLog(dir.Write("noisy.log", log));
+  EXPECT_EQ(dataset.warnings.size(), 11u);
+  EXPECT_TRUE(AnyWarningContains(dataset, "15 more malformed lines not listed (25 in total)"));
+}
+
+TEST(CarmenLogReader, FlaserRangeMaxIsInferredFromTheSaturationValue) {
+  const TestTempDirectory dir;
+  std::string saturated;
+  for (int i = 0; i < 12; ++i) saturated += Flaser(2, 50.0, 0, 0, 0, i);
+  EXPECT_FLOAT_EQ(ReadCarmenLog(dir.Write("a.log", saturated)).scans[0].range_max_m, 49.5f);
+  // A largest reading seen once is a return, not a saturation value.
+  const Dataset plain = ReadCarmenLog(
+      dir.Write("b.log", Flaser(2, 5.0, 0, 0, 0, 1.0) + Flaser(1, 7.0, 0, 0, 0, 2.0)));
+  EXPECT_FLOAT_EQ(plain.scans[0].range_max_m, 81.9f);
+}
+
+TEST(CarmenLogReader, CoarseTimestampsGiveAWarning) {
+  const TestTempDirectory dir;
+  std::string log;
+  for (int i = 0; i < 4; ++i) log += Flaser(2, 1.0, i, 0, 0, 0.0);
+  const Dataset dataset = ReadCarmenLog(dir.Write("zero_times.log", log));
+  EXPECT_EQ(dataset.scans.size(), 4u);
+  EXPECT_TRUE(AnyWarningContains(dataset, "3 of 4 scans have the same ipc_timestamp"));
+}
+
+TEST(CarmenLogReader, GzipLogReadsLikeThePlainOne) {
+  const TestTempDirectory dir;
+  const std::string log = Odom(0, 0, 0, 0.5) + Flaser(3, 1.5, 1, 2, 0.1, 1.0) +
+                          Odom(0.5, 0, 0, 1.5) + Flaser(3, 2.5, 1, 3, 0.2, 2.0);
+  const Dataset plain = ReadCarmenLog(dir.Write("same.log", log));
+  const fs::path gz = dir.path() / "same.log.gz";
+  WriteGzip(gz, log);
+  const Dataset compressed = ReadCarmenLog(gz);
+  EXPECT_EQ(compressed.name, "same");
+  ASSERT_EQ(compressed.scans.size(), plain.scans.size());
+  for (std::size_t i = 0; i < plain.scans.size(); ++i) {
+    EXPECT_EQ(compressed.scans[i].ranges, plain.scans[i].ranges);
+    EXPECT_EQ(compressed.scans[i].time_s, plain.scans[i].time_s);
+  }
+  EXPECT_EQ(compressed.odometry.size(), 2u);
+  EXPECT_TRUE(compressed.warnings.empty());
+}
+
+TEST(CarmenLogReader, TruncatedGzipKeepsTheCompleteLinesWithAWarning) {
+  const TestTempDirectory dir;
+  // Varied ranges so the compressed stream is long enough to cut in the middle.
+  std::string log;
+  for (int i = 0; i < 2000; ++i) log += Flaser(6, 1.0 + (i * 7919 % 1000) * 0.001, i, 0, 0, i);
+  const fs::path whole = dir.path() / "whole.log.gz";
+  WriteGzip(whole, log);
+  const fs::path cut = dir.path() / "cut.log.gz";
+  fs::copy_file(whole, cut);
+  fs::resize_file(cut, fs::file_size(whole) / 2);
+  const Dataset dataset = ReadCarmenLog(cut);
+  EXPECT_GT(dataset.scans.size(), 100u);
+  EXPECT_LT(dataset.scans.size(), 2000u);
+  // Every kept scan is complete: 6 beams with the ranges written.
+  for (std::size_t i = 0; i < dataset.scans.size(); ++i) {
+    ASSERT_EQ(dataset.scans[i].ranges.size(), 6u);
+    EXPECT_FLOAT_EQ(dataset.scans[i].ranges[5], 1.0f + (i * 7919 % 1000) * 0.001f);
+  }
+  EXPECT_TRUE(AnyWarningContains(dataset, cut.string() + ": gzip data ends early"));
+}
+
+TEST(CarmenLogReader, GzipCutInItsHeaderIsAnErrorNamingTheFile) {
+  const TestTempDirectory dir;
+  const fs::path whole = dir.path() / "whole.log.gz";
+  WriteGzip(whole, Flaser(3, 1.0, 0, 0, 0, 1.0));
+  const fs::path cut = dir.path() / "header_only.log.gz";
+  fs::copy_file(whole, cut);
+  fs::resize_file(cut, 6);
+  const std::string message = ThrownMessage(cut);
+  EXPECT_NE(message.find(cut.string()), std::string::npos) << message;
+  EXPECT_NE(message.find("gzip"), std::string::npos) << message;
+}
+
+TEST(CarmenLogReader, CorruptGzipDataIsAnErrorNamingTheFile) {
+  const TestTempDirectory dir;
+  const fs::path path =
+      dir.Write("corrupt.log.gz", std::string("\x1f\x8b\x08\x00\x00\x00\x00\x00\x00\x03", 10) +
+                                      std::string(200, '\xff'));
+  const std::string message = ThrownMessage(path);
+  EXPECT_NE(message.find(path.string() + ": corrupt or truncated gzip"), std::string::npos)
+      << message;
+}
+
+TEST(CarmenLogReader, LogWithoutScansIsAnError) {
+  const TestTempDirectory dir;
+  const fs::path path = dir.Write("odom_only.log", Odom(0, 0, 0, 1.0) + Odom(1, 0, 0, 2.0));
+  const std::string message = ThrownMessage(path);
+  EXPECT_NE(message.find(path.string() + ": no usable laser scan"), std::string::npos) << message;
+  EXPECT_NE(message.find("expected FLASER or ROBOTLASER1"), std::string::npos) << message;
+  EXPECT_NE(ThrownMessage(dir.path() / "missing.log").find("missing.log: cannot open"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace scout::io

@@ -1,0 +1,224 @@
+// C++17 translation unit: the ROS 1 message headers do not compile as C++20.
+#include "scout/io/ros_bag_reader.h"
+
+// Compiled as C++20 this would break on the ROS headers in confusing ways.
+static_assert(__cplusplus == 201703L, "compile ros_bag_reader.cc with scout_ros1_sources()");
+
+#include <nav_msgs/Odometry.h>
+#include <rosbag/bag.h>
+#include <rosbag/exceptions.h>
+#include <rosbag/view.h>
+#include <sensor_msgs/LaserScan.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+
+#include "scout/common/error.h"
+#include "scout/io/dataset_warnings.h"
+#include "scout/io/gzip_file.h"
+
+namespace scout::io {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr char kScanType[] = "sensor_msgs/LaserScan";
+constexpr char kOdometryType[] = "nav_msgs/Odometry";
+
+std::vector<BagTopic> TopicsOf(rosbag::Bag& bag) {
+  std::map<std::string, BagTopic> by_name;
+  rosbag::View view(bag);
+  for (const rosbag::ConnectionInfo* connection : view.getConnections()) {
+    BagTopic& topic = by_name[connection->topic];
+    topic.name = connection->topic;
+    topic.type = connection->datatype;
+  }
+  for (auto& [name, topic] : by_name) {
+    topic.message_count = rosbag::View(bag, rosbag::TopicQuery(name)).size();
+  }
+  std::vector<BagTopic> topics;
+  for (auto& [name, topic] : by_name) topics.push_back(std::move(topic));
+  return topics;
+}
+
+std::string Describe(const std::vector<BagTopic>& topics, const std::string& type) {
+  std::string text;
+  for (const BagTopic& topic : topics) {
+    if (!type.empty() && topic.type != type) continue;
+    text += (text.empty() ? "" : ", ") + topic.name + " (" +
+            (type.empty() ? topic.type + ", " : "") + std::to_string(topic.message_count) +
+            " messages)";
+  }
+  return text.empty() ? "none" : text;
+}
+
+// Returns the topic to read for 'type': 'requested' if set (InputError if it
+// is not a topic of that type), else the one with most messages, or nothing.
+std::optional<BagTopic> ChooseTopic(const std::vector<BagTopic>& topics, const std::string& type,
+                                    const std::string& requested, const std::string& source,
+                                    std::vector<std::string>* warnings) {
+  if (!requested.empty()) {
+    for (const BagTopic& topic : topics) {
+      if (topic.name == requested && topic.type == type) return topic;
+    }
+    throw InputError(source + ": topic '" + requested + "' is not a " + type +
+                     " topic of the bag; expected one of: " + Describe(topics, type));
+  }
+  std::vector<BagTopic> candidates;
+  for (const BagTopic& topic : topics) {
+    if (topic.type == type) candidates.push_back(topic);
+  }
+  if (candidates.empty()) return std::nullopt;
+  // Most messages first; ties by name, so the choice does not depend on order.
+  std::sort(candidates.begin(), candidates.end(), [](const BagTopic& a, const BagTopic& b) {
+    return a.message_count != b.message_count ? a.message_count > b.message_count : a.name < b.name;
+  });
+  if (candidates.size() > 1) {
+    warnings->push_back(source + ": several " + type + " topics (" + Describe(candidates, type) +
+                        "); reading " + candidates.front().name +
+                        " (the one with most messages; choose another in the options)");
+  }
+  return candidates.front();
+}
+
+double StampOrBagTime(const ros::Time& stamp, const ros::Time& bag_time) {
+  return stamp.isZero() ? bag_time.toSec() : stamp.toSec();
+}
+
+double YawOf(const geometry_msgs::Quaternion& q) {
+  return std::atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z));
+}
+
+class BagConverter {
+ public:
+  BagConverter(const std::string& source, Dataset* dataset)
+      : source_(source), dataset_(dataset), warnings_(&dataset->warnings) {}
+
+  void AddScan(const sensor_msgs::LaserScan& message, const ros::Time& bag_time) {
+    const double time = StampOrBagTime(message.header.stamp, bag_time);
+    if (message.ranges.empty()) {
+      warnings_.Add("scans without beams", source_ + ": LaserScan at t=" + std::to_string(time) +
+                                               " s has 0 beams; skipped (expected ranges)");
+      return;
+    }
+    if (!dataset_->scans.empty() && time < dataset_->scans.back().time_s) {
+      warnings_.Add("scans with backwards time",
+                    source_ + ": LaserScan at t=" + std::to_string(time) +
+                        " s is earlier than the previous scan (t=" +
+                        std::to_string(dataset_->scans.back().time_s) + " s); dropped");
+      return;
+    }
+    sensor::LaserScan scan;
+    scan.time_s = time;
+    scan.angle_min_rad = message.angle_min;
+    scan.angle_increment_rad = message.angle_increment;
+    scan.range_min_m = message.range_min;
+    scan.range_max_m = message.range_max;
+    scan.ranges = message.ranges;
+    dataset_->scans.push_back(std::move(scan));
+  }
+
+  void AddOdometry(const nav_msgs::Odometry& message, const ros::Time& bag_time) {
+    const double time = StampOrBagTime(message.header.stamp, bag_time);
+    if (!dataset_->odometry.empty() && time < dataset_->odometry.back().time_s) {
+      warnings_.Add("odometry messages with backwards time",
+                    source_ + ": Odometry at t=" + std::to_string(time) +
+                        " s is earlier than the previous one (t=" +
+                        std::to_string(dataset_->odometry.back().time_s) + " s); dropped");
+      return;
+    }
+    const geometry_msgs::Pose& pose = message.pose.pose;
+    dataset_->odometry.push_back(
+        {time, geometry::Rigid2d(pose.position.x, pose.position.y, YawOf(pose.orientation))});
+  }
+
+  void Finish() { warnings_.Finish(source_); }
+
+ private:
+  std::string source_;
+  Dataset* dataset_;
+  DatasetWarnings warnings_;
+};
+
+// Reads the plain bag 'bag_path'; errors and warnings name 'source'.
+void ReadPlainBag(const fs::path& bag_path, const std::string& source,
+                  const DatasetOptions& options, Dataset* dataset) {
+  rosbag::Bag bag(bag_path.string(), rosbag::bagmode::Read);
+  const std::vector<BagTopic> topics = TopicsOf(bag);
+  const std::optional<BagTopic> scan_topic =
+      ChooseTopic(topics, kScanType, options.scan_topic, source, &dataset->warnings);
+  if (!scan_topic) {
+    throw InputError(source + ": no " + std::string(kScanType) +
+                     " topic in the bag; expected at least one. Topics: " + Describe(topics, ""));
+  }
+  const std::optional<BagTopic> odometry_topic =
+      ChooseTopic(topics, kOdometryType, options.odometry_topic, source, &dataset->warnings);
+  std::vector<std::string> wanted = {scan_topic->name};
+  if (odometry_topic) {
+    wanted.push_back(odometry_topic->name);
+  } else {
+    dataset->warnings.push_back(source + ": no " + std::string(kOdometryType) +
+                                " topic in the bag; the dataset has no odometry");
+  }
+  BagConverter converter(source, dataset);
+  rosbag::View view(bag, rosbag::TopicQuery(wanted));
+  for (const rosbag::MessageInstance& message : view) {
+    if (message.getTopic() == scan_topic->name) {
+      if (auto scan = message.instantiate<sensor_msgs::LaserScan>()) {
+        converter.AddScan(*scan, message.getTime());
+      }
+    } else if (auto odometry = message.instantiate<nav_msgs::Odometry>()) {
+      converter.AddOdometry(*odometry, message.getTime());
+    }
+  }
+  converter.Finish();
+  if (dataset->scans.empty()) {
+    throw InputError(source + ": topic " + scan_topic->name +
+                     " holds no usable scan; expected LaserScan messages with ranges");
+  }
+}
+
+// Runs 'read', turning library exceptions (rosbag, serialization, allocation
+// from corrupt sizes) into InputError naming 'source'.
+template <typename Read>
+auto WithInputErrors(const std::string& source, Read read) {
+  try {
+    return read();
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw InputError(source + ": not a readable ROS 1 bag (" + e.what() +
+                     "); expected a complete, indexed bag of format 2.0");
+  }
+}
+
+}  // namespace
+
+Dataset ReadRosBag(const fs::path& path, const DatasetOptions& options) {
+  const std::string source = path.string();
+  Dataset dataset;
+  dataset.name = DatasetName(path);
+  dataset.format = "rosbag";
+  if (IsGzipFile(path)) {
+    const TemporaryFile plain("scout_bag_");
+    DecompressGzipFile(path, plain.path());
+    WithInputErrors(source, [&] { ReadPlainBag(plain.path(), source, options, &dataset); });
+  } else {
+    WithInputErrors(source, [&] { ReadPlainBag(path, source, options, &dataset); });
+  }
+  return dataset;
+}
+
+std::vector<BagTopic> ListBagTopics(const fs::path& path) {
+  return WithInputErrors(path.string(), [&] {
+    rosbag::Bag bag(path.string(), rosbag::bagmode::Read);
+    return TopicsOf(bag);
+  });
+}
+
+}  // namespace scout::io

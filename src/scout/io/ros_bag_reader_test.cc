@@ -1,0 +1,271 @@
+// C++17 translation unit: writes bags with the ROS 1 message headers.
+#include "scout/io/ros_bag_reader.h"
+
+#include <geometry_msgs/PoseStamped.h>
+#include <gtest/gtest.h>
+#include <nav_msgs/Odometry.h>
+#include <rosbag/bag.h>
+#include <sensor_msgs/LaserScan.h>
+#include <stdlib.h>
+#include <zlib.h>
+
+#include <cmath>
+#include <fstream>
+#include <iterator>
+#include <optional>
+#include <string>
+
+#include "scout/common/error.h"
+#include "scout/grid/test_temp_directory.h"
+
+namespace scout::io {
+namespace {
+
+namespace fs = std::filesystem;
+using grid::TestTempDirectory;
+
+sensor_msgs::LaserScan Scan(double stamp_s, int beams) {
+  sensor_msgs::LaserScan scan;
+  scan.header.stamp = ros::Time(stamp_s);
+  scan.header.frame_id = "laser";
+  scan.angle_min = -1.0f;
+  scan.angle_max = 1.0f;
+  scan.angle_increment = 0.25f;
+  scan.range_min = 0.1f;
+  scan.range_max = 20.f;
+  for (int k = 0; k < beams; ++k) scan.ranges.push_back(1.0f + k);
+  return scan;
+}
+
+nav_msgs::Odometry Odom(double stamp_s, double x, double y, double yaw) {
+  nav_msgs::Odometry odometry;
+  odometry.header.stamp = ros::Time(stamp_s);
+  odometry.pose.pose.position.x = x;
+  odometry.pose.pose.position.y = y;
+  odometry.pose.pose.orientation.z = std::sin(yaw / 2);
+  odometry.pose.pose.orientation.w = std::cos(yaw / 2);
+  return odometry;
+}
+
+// A bag with scans on /front_scan (3) and /rear_scan (1), odometry on
+// /wheel_odom and a PoseStamped distractor.
+fs::path WriteTestBag(const fs::path& path) {
+  rosbag::Bag bag(path.string(), rosbag::bagmode::Write);
+  for (int i = 0; i < 3; ++i) {
+    bag.write("/front_scan", ros::Time(10.0 + i), Scan(i == 1 ? 0.0 : 10.0 + i, 4));
+    bag.write("/wheel_odom", ros::Time(10.5 + i), Odom(10.5 + i, i, 2.0 * i, 0.5 * i));
+  }
+  bag.write("/rear_scan", ros::Time(11.0), Scan(11.0, 2));
+  geometry_msgs::PoseStamped pose;
+  pose.header.stamp = ros::Time(11.0);
+  bag.write("/goal", ros::Time(11.0), pose);
+  bag.close();
+  return path;
+}
+
+void GzipFile(const fs::path& from, const fs::path& to) {
+  std::ifstream in(from, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  gzFile out = gzopen(to.c_str(), "wb");
+  ASSERT_NE(out, nullptr);
+  ASSERT_EQ(gzwrite(out, bytes.data(), static_cast<unsigned>(bytes.size())),
+            static_cast<int>(bytes.size()));
+  ASSERT_EQ(gzclose(out), Z_OK);
+}
+
+bool AnyWarningContains(const Dataset& dataset, const std::string& text) {
+  for (const std::string& warning : dataset.warnings) {
+    if (warning.find(text) != std::string::npos) return true;
+  }
+  return false;
+}
+
+std::string ThrownMessage(const fs::path& path, const DatasetOptions& options = {}) {
+  try {
+    ReadRosBag(path, options);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(no InputError)";
+}
+
+// Points TMPDIR at an empty directory for the lifetime of this object, so a
+// test can check that the reader leaves no temporary file behind.
+class ScopedTmpDir {
+ public:
+  explicit ScopedTmpDir(const fs::path& dir) : dir_(dir) {
+    fs::create_directories(dir);
+    if (const char* old = getenv("TMPDIR")) old_ = old;
+    setenv("TMPDIR", dir.c_str(), 1);
+  }
+  ~ScopedTmpDir() {
+    if (old_) {
+      setenv("TMPDIR", old_->c_str(), 1);
+    } else {
+      unsetenv("TMPDIR");
+    }
+  }
+  bool IsEmpty() const { return fs::is_empty(dir_); }
+
+ private:
+  fs::path dir_;
+  std::optional<std::string> old_;
+};
+
+TEST(RosBagReader, AutoDetectsTopicsByTypeAndMessageCount) {
+  const TestTempDirectory dir;
+  const fs::path path = WriteTestBag(dir.path() / "robot.bag");
+  const Dataset dataset = ReadRosBag(path);
+  EXPECT_EQ(dataset.name, "robot");
+  EXPECT_EQ(dataset.format, "rosbag");
+  ASSERT_EQ(dataset.scans.size(), 3u);
+  const sensor::LaserScan& scan = dataset.scans[0];
+  EXPECT_DOUBLE_EQ(scan.time_s, 10.0);
+  EXPECT_FLOAT_EQ(scan.angle_min_rad, -1.0f);
+  EXPECT_FLOAT_EQ(scan.angle_increment_rad, 0.25f);
+  EXPECT_FLOAT_EQ(scan.range_min_m, 0.1f);
+  EXPECT_FLOAT_EQ(scan.range_max_m, 20.f);
+  EXPECT_EQ(scan.ranges, (std::vector<float>{1.f, 2.f, 3.f, 4.f}));
+  // A zero header stamp falls back to the bag's receive time.
+  EXPECT_DOUBLE_EQ(dataset.scans[1].time_s, 11.0);
+  ASSERT_EQ(dataset.odometry.size(), 3u);
+  EXPECT_DOUBLE_EQ(dataset.odometry[2].time_s, 12.5);
+  EXPECT_NEAR(dataset.odometry[2].pose.x(), 2.0, 1e-12);
+  EXPECT_NEAR(dataset.odometry[2].pose.y(), 4.0, 1e-12);
+  EXPECT_NEAR(dataset.odometry[2].pose.theta(), 1.0, 1e-12);
+  EXPECT_TRUE(dataset.scan_poses.empty());
+  EXPECT_TRUE(AnyWarningContains(dataset, "several sensor_msgs/LaserScan topics"));
+  EXPECT_TRUE(AnyWarningContains(dataset, "reading /front_scan"));
+}
+
+TEST(RosBagReader, OptionsChooseTheTopics) {
+  const TestTempDirectory dir;
+  const fs::path path = WriteTestBag(dir.path() / "robot.bag");
+  DatasetOptions options;
+  options.scan_topic = "/rear_scan";
+  options.odometry_topic = "/wheel_odom";
+  const Dataset dataset = ReadRosBag(path, options);
+  ASSERT_EQ(dataset.scans.size(), 1u);
+  EXPECT_EQ(dataset.scans[0].ranges.size(), 2u);
+  EXPECT_EQ(dataset.odometry.size(), 3u);
+  EXPECT_TRUE(dataset.warnings.empty());
+}
+
+TEST(RosBagReader, UnknownTopicIsAnErrorListingTheTopicsOfThatType) {
+  const TestTempDirectory dir;
+  const fs::path path = WriteTestBag(dir.path() / "robot.bag");
+  DatasetOptions options;
+  options.scan_topic = "/goal";  // exists, but is not a LaserScan
+  const std::string message = ThrownMessage(path, options);
+  EXPECT_NE(message.find(path.string() + ": topic '/goal' is not a sensor_msgs/LaserScan"),
+            std::string::npos)
+      << message;
+  EXPECT_NE(message.find("/front_scan (3 messages), /rear_scan (1 messages)"), std::string::npos)
+      << message;
+  options = {};
+  options.odometry_topic = "/odom";
+  EXPECT_NE(ThrownMessage(path, options).find("expected one of: /wheel_odom"), std::string::npos);
+}
+
+TEST(RosBagReader, BagWithoutScansIsAnErrorAndWithoutOdometryAWarning) {
+  const TestTempDirectory dir;
+  const fs::path no_scans = dir.path() / "no_scans.bag";
+  {
+    rosbag::Bag bag(no_scans.string(), rosbag::bagmode::Write);
+    bag.write("/odom", ros::Time(1.0), Odom(1.0, 0, 0, 0));
+  }
+  const std::string message = ThrownMessage(no_scans);
+  EXPECT_NE(message.find(no_scans.string() + ": no sensor_msgs/LaserScan topic"), std::string::npos)
+      << message;
+  EXPECT_NE(message.find("/odom (nav_msgs/Odometry, 1 messages)"), std::string::npos) << message;
+
+  const fs::path no_odometry = dir.path() / "no_odometry.bag";
+  {
+    rosbag::Bag bag(no_odometry.string(), rosbag::bagmode::Write);
+    bag.write("/scan", ros::Time(1.0), Scan(1.0, 3));
+  }
+  const Dataset dataset = ReadRosBag(no_odometry);
+  EXPECT_EQ(dataset.scans.size(), 1u);
+  EXPECT_TRUE(dataset.odometry.empty());
+  EXPECT_TRUE(AnyWarningContains(dataset, "no nav_msgs/Odometry topic"));
+}
+
+TEST(RosBagReader, StampsGoingBackAndEmptyScansAreDroppedWithWarnings) {
+  const TestTempDirectory dir;
+  const fs::path path = dir.path() / "stamps.bag";
+  {
+    rosbag::Bag bag(path.string(), rosbag::bagmode::Write);
+    bag.write("/scan", ros::Time(1.0), Scan(1.0, 3));
+    bag.write("/scan", ros::Time(2.0), Scan(0.5, 3));
+    bag.write("/scan", ros::Time(3.0), Scan(3.0, 0));
+    bag.write("/scan", ros::Time(4.0), Scan(4.0, 3));
+  }
+  const Dataset dataset = ReadRosBag(path);
+  ASSERT_EQ(dataset.scans.size(), 2u);
+  EXPECT_DOUBLE_EQ(dataset.scans[1].time_s, 4.0);
+  EXPECT_TRUE(AnyWarningContains(dataset, "LaserScan at t=0.5"));
+  EXPECT_TRUE(AnyWarningContains(dataset, "has 0 beams"));
+}
+
+TEST(RosBagReader, TruncatedOrCorruptBagIsAnErrorNamingTheFile) {
+  const TestTempDirectory dir;
+  const fs::path whole = WriteTestBag(dir.path() / "whole.bag");
+  const fs::path cut = dir.path() / "cut.bag";
+  fs::copy_file(whole, cut);
+  fs::resize_file(cut, fs::file_size(whole) / 2);
+  std::string message = ThrownMessage(cut);
+  EXPECT_NE(message.find(cut.string() + ": not a readable ROS 1 bag"), std::string::npos)
+      << message;
+  const fs::path garbage = dir.Write("garbage.bag", "#ROSBAG V2.0\nthis is not a bag");
+  message = ThrownMessage(garbage);
+  EXPECT_NE(message.find(garbage.string() + ": not a readable ROS 1 bag"), std::string::npos)
+      << message;
+}
+
+TEST(RosBagReader, GzipBagReadsLikeThePlainOneAndLeavesNoTemporaryFile) {
+  const TestTempDirectory dir;
+  const fs::path plain = WriteTestBag(dir.path() / "robot.bag");
+  const fs::path gz = dir.path() / "robot.bag.gz";
+  GzipFile(plain, gz);
+  const ScopedTmpDir tmp(dir.path() / "tmp");
+  const Dataset dataset = ReadRosBag(gz);
+  EXPECT_EQ(dataset.name, "robot");
+  EXPECT_EQ(dataset.scans.size(), 3u);
+  EXPECT_EQ(dataset.odometry.size(), 3u);
+  EXPECT_TRUE(tmp.IsEmpty());
+
+  // Also after errors: a truncated gzip, and a complete gzip of a cut bag.
+  const fs::path cut_gz = dir.path() / "cut.bag.gz";
+  fs::copy_file(gz, cut_gz);
+  fs::resize_file(cut_gz, fs::file_size(gz) / 2);
+  EXPECT_NE(ThrownMessage(cut_gz).find(cut_gz.string() + ": corrupt or truncated gzip"),
+            std::string::npos);
+  EXPECT_TRUE(tmp.IsEmpty());
+  const fs::path cut_bag = dir.path() / "cut.bag";
+  fs::copy_file(plain, cut_bag);
+  fs::resize_file(cut_bag, fs::file_size(plain) / 2);
+  const fs::path gz_of_cut = dir.path() / "gz_of_cut.bag.gz";
+  GzipFile(cut_bag, gz_of_cut);
+  EXPECT_NE(ThrownMessage(gz_of_cut).find(gz_of_cut.string() + ": not a readable ROS 1 bag"),
+            std::string::npos);
+  EXPECT_TRUE(tmp.IsEmpty());
+}
+
+TEST(RosBagReader, LoadDatasetDetectsBagsByContent) {
+  const TestTempDirectory dir;
+  const fs::path plain = WriteTestBag(dir.path() / "recording.dat");
+  const fs::path gz = dir.path() / "recording.gz";
+  GzipFile(plain, gz);
+  EXPECT_EQ(LoadDataset(plain).format, "rosbag");
+  const Dataset dataset = LoadDataset(gz);
+  EXPECT_EQ(dataset.format, "rosbag");
+  EXPECT_EQ(dataset.scans.size(), 3u);
+  const std::vector<BagTopic> topics = ListBagTopics(plain);
+  ASSERT_EQ(topics.size(), 4u);
+  EXPECT_EQ(topics[0].name, "/front_scan");
+  EXPECT_EQ(topics[0].type, "sensor_msgs/LaserScan");
+  EXPECT_EQ(topics[0].message_count, 3u);
+}
+
+}  // namespace
+}  // namespace scout::io
