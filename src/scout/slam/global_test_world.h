@@ -31,20 +31,38 @@ inline void AddRectangle(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi,
 }
 
 // A 3 m wide corridor around a 14 m x 6 m block (outer walls 20 m x 12 m,
-// from (-10, -6) to (10, 6)), with pillars and niches so no two stretches of
-// corridor look alike. The corridor centre line is the rectangle
-// (-8.5, -4.5) .. (8.5, 4.5).
+// from (-10, -6) to (10, 6)). The corridor centre line is the rectangle
+// (-8.5, -4.5) .. (8.5, 4.5). Both corridor walls carry boxes of random size
+// at random spacing (fixed seed), at most 0.6 m deep: a bare corridor looks
+// the same everywhere along its axis, and loop closures there would be
+// guesses.
 inline std::vector<Wall> CorridorLoop() {
   std::vector<Wall> walls;
   AddRectangle({-10.0, -6.0}, {10.0, 6.0}, &walls);
   AddRectangle({-7.0, -3.0}, {7.0, 3.0}, &walls);
-  AddRectangle({-4.0, -5.6}, {-3.4, -5.0}, &walls);  // pillars
-  AddRectangle({2.0, 4.9}, {2.8, 5.5}, &walls);
-  AddRectangle({8.8, -1.0}, {9.6, -0.2}, &walls);
-  AddRectangle({-9.5, 1.5}, {-9.0, 3.5}, &walls);
-  walls.push_back({{5.0, -6.0}, {6.0, -5.2}});  // slanted corner pieces
-  walls.push_back({{-7.0, 4.0}, {-6.2, 3.0}});
-  walls.push_back({{7.0, 1.0}, {7.8, 2.2}});
+  // Each corridor wall as (start, end, unit normal into the corridor).
+  struct Side {
+    Eigen::Vector2d from, to, inward;
+  };
+  const std::vector<Side> sides = {{{-10, -6}, {10, -6}, {0, 1}}, {{10, -6}, {10, 6}, {-1, 0}},
+                                   {{10, 6}, {-10, 6}, {0, -1}},  {{-10, 6}, {-10, -6}, {1, 0}},
+                                   {{-7, -3}, {7, -3}, {0, -1}},  {{7, -3}, {7, 3}, {1, 0}},
+                                   {{7, 3}, {-7, 3}, {0, 1}},     {{-7, 3}, {-7, -3}, {-1, 0}}};
+  std::mt19937 rng(20240611);
+  std::uniform_real_distribution<double> gap(1.2, 2.8), length(0.3, 1.0), depth(0.2, 0.6);
+  for (const Side& side : sides) {
+    const double wall_length = (side.to - side.from).norm();
+    const Eigen::Vector2d along = (side.to - side.from) / wall_length;
+    for (double t = gap(rng); t + 1.0 < wall_length; t += gap(rng)) {
+      const double l = length(rng), d = depth(rng);
+      const Eigen::Vector2d a = side.from + t * along;
+      const Eigen::Vector2d b = a + l * along;
+      const Eigen::Vector2d c = b + d * side.inward;
+      const Eigen::Vector2d e = a + d * side.inward;
+      walls.insert(walls.end(), {{a, b}, {b, c}, {c, e}, {e, a}});
+      t += l;
+    }
+  }
   return walls;
 }
 

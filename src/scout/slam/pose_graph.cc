@@ -1,0 +1,263 @@
+#include "scout/slam/pose_graph.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace scout::slam {
+namespace {
+
+void RequirePositive(const char* key, double value) {
+  if (!(std::isfinite(value) && value > 0.0)) {
+    throw std::invalid_argument(std::string("pose_graph option '") + key +
+                                "': expected a positive finite number, got " +
+                                std::to_string(value));
+  }
+}
+
+bool Contains(const std::vector<int>& ids, int id) {
+  return std::find(ids.begin(), ids.end(), id) != ids.end();
+}
+
+}  // namespace
+
+void Validate(const PoseGraphOptions& options) {
+  if (options.optimize_every_n_nodes < 0) {
+    throw std::invalid_argument("pose_graph option 'optimize_every_n_nodes': expected >= 0, got " +
+                                std::to_string(options.optimize_every_n_nodes));
+  }
+  RequirePositive("intra_submap_translation_weight", options.intra_submap_translation_weight);
+  RequirePositive("intra_submap_rotation_weight", options.intra_submap_rotation_weight);
+  Validate(options.loop_closure_voxel_filter);
+  Validate(options.constraint_builder);
+  Validate(options.optimization_problem);
+}
+
+PoseGraph::PoseGraph(const PoseGraphOptions& options, OptimizationCallback callback)
+    : options_((Validate(options), options)),
+      callback_(std::move(callback)),
+      optimization_problem_(options.optimization_problem),
+      constraint_builder_(options.constraint_builder),
+      work_queue_(options.synchronous) {}
+
+PoseGraph::~PoseGraph() = default;
+
+int PoseGraph::AddNode(double time_s, const geometry::Rigid2d& local_pose, const PointCloud& points,
+                       const std::vector<InsertedSubmap>& insertion_submaps,
+                       std::optional<geometry::Rigid2d> odometry_pose) {
+  auto thinned = std::make_shared<const PointCloud>(
+      AdaptiveVoxelFilter(points, options_.loop_closure_voxel_filter));
+  int node_id = 0;
+  std::vector<int> newly_finished;
+  bool optimize = false;
+  int prefix_nodes = 0, prefix_submaps = 0;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    for (const InsertedSubmap& inserted : insertion_submaps) {
+      if (inserted.grid == nullptr) {
+        throw std::invalid_argument("PoseGraph::AddNode: submap " + std::to_string(inserted.id) +
+                                    " comes without a grid");
+      }
+      if (inserted.id < 0 || inserted.id > static_cast<int>(submaps_.size())) {
+        throw std::invalid_argument("PoseGraph::AddNode: submap id " + std::to_string(inserted.id) +
+                                    " skips ids (next new id is " +
+                                    std::to_string(submaps_.size()) + ")");
+      }
+    }
+    node_id = static_cast<int>(nodes_.size());
+    Node node;
+    node.data = {time_s, local_pose, local_to_global_ * local_pose, odometry_pose};
+    node.points = std::move(thinned);
+    for (const InsertedSubmap& inserted : insertion_submaps) {
+      if (inserted.id == static_cast<int>(submaps_.size())) {
+        // A new submap starts where local SLAM put it, seen through the
+        // latest correction of local drift.
+        Submap submap;
+        submap.state.local_pose = inserted.local_pose;
+        submap.state.global_pose = local_to_global_ * inserted.local_pose;
+        submaps_.push_back(std::move(submap));
+      }
+      Submap& submap = submaps_[inserted.id];
+      submap.state.grid = inserted.grid;
+      submap.node_ids.push_back(node_id);
+      if (inserted.finished && !submap.state.finished) {
+        submap.state.finished = true;
+        newly_finished.push_back(inserted.id);
+      }
+      node.submap_ids.push_back(inserted.id);
+      constraints_.push_back({inserted.id, node_id, submap.state.local_pose.inverse() * local_pose,
+                              options_.intra_submap_translation_weight,
+                              options_.intra_submap_rotation_weight, ConstraintKind::kIntraSubmap});
+    }
+    nodes_.push_back(std::move(node));
+    stats_.num_nodes = static_cast<int>(nodes_.size());
+    stats_.num_submaps = static_cast<int>(submaps_.size());
+    if (options_.optimize_every_n_nodes > 0 &&
+        ++nodes_since_optimization_ >= options_.optimize_every_n_nodes) {
+      nodes_since_optimization_ = 0;
+      optimize = true;
+      // The solve covers exactly what exists now, however late it runs, so
+      // background results equal synchronous ones.
+      prefix_nodes = static_cast<int>(nodes_.size());
+      prefix_submaps = static_cast<int>(submaps_.size());
+    }
+  }
+  work_queue_.Schedule(
+      [this, node_id, newly_finished] { ComputeConstraints(node_id, newly_finished); });
+  if (optimize) {
+    work_queue_.Schedule(
+        [this, prefix_nodes, prefix_submaps] { Optimize(prefix_nodes, prefix_submaps); });
+  }
+  return node_id;
+}
+
+void PoseGraph::ComputeConstraints(int node_id, const std::vector<int>& newly_finished) {
+  std::vector<int> node_submaps;
+  int num_submaps = 0;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    node_submaps = nodes_[node_id].submap_ids;
+    num_submaps = static_cast<int>(submaps_.size());
+  }
+  // Only submaps registered by earlier steps count as finished here, so the
+  // set is the same whether this step runs late (background) or at once.
+  std::vector<int> finished_before;
+  for (int submap_id = 0; submap_id < num_submaps; ++submap_id) {
+    if (constraint_builder_.HasSubmap(submap_id) && !Contains(node_submaps, submap_id)) {
+      finished_before.push_back(submap_id);
+    }
+  }
+  for (int submap_id : finished_before) SearchPair(node_id, submap_id);
+
+  // A submap that just finished is searched against every older node; newer
+  // nodes will meet it in their own step above.
+  for (int submap_id : newly_finished) {
+    std::shared_ptr<const grid::ProbabilityGrid> grid;
+    std::vector<int> members;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      grid = submaps_[submap_id].state.grid;
+      members = submaps_[submap_id].node_ids;
+    }
+    constraint_builder_.AddFinishedSubmap(submap_id, std::move(grid));
+    for (int other = 0; other <= node_id; ++other) {
+      if (!Contains(members, other)) SearchPair(other, submap_id);
+    }
+  }
+}
+
+void PoseGraph::SearchPair(int node_id, int submap_id) {
+  geometry::Rigid2d initial_relative_pose;
+  std::shared_ptr<const PointCloud> points;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    initial_relative_pose =
+        submaps_[submap_id].state.global_pose.inverse() * nodes_[node_id].data.global_pose;
+    points = nodes_[node_id].points;
+  }
+  if (!constraint_builder_.ShouldSearch(submap_id, initial_relative_pose)) return;
+  const std::optional<Constraint> found =
+      constraint_builder_.Search(submap_id, node_id, initial_relative_pose, *points);
+  std::lock_guard<std::mutex> lock(mutex_);
+  ++stats_.num_searches;
+  if (found) {
+    constraints_.push_back(*found);
+    ++stats_.num_loop_closures;
+  }
+}
+
+void PoseGraph::Optimize(int num_nodes, int num_submaps) {
+  if (num_nodes == 0 || num_submaps == 0) return;
+  std::vector<OptimizationNode> nodes;
+  std::vector<geometry::Rigid2d> submap_poses;
+  std::vector<Constraint> constraints;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    nodes.reserve(num_nodes);
+    for (int i = 0; i < num_nodes; ++i) nodes.push_back(nodes_[i].data);
+    for (int i = 0; i < num_submaps; ++i) submap_poses.push_back(submaps_[i].state.global_pose);
+    for (const Constraint& c : constraints_) {
+      if (c.node_id < num_nodes && c.submap_id < num_submaps) constraints.push_back(c);
+    }
+  }
+  // Solved without the lock: AddNode keeps running meanwhile.
+  const OptimizationResult result = optimization_problem_.Solve(nodes, submap_poses, constraints);
+
+  std::vector<geometry::Rigid2d> all_submap_poses;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    for (int i = 0; i < num_nodes; ++i) nodes_[i].data.global_pose = result.node_global_poses[i];
+    for (int i = 0; i < num_submaps; ++i) {
+      submaps_[i].state.global_pose = result.submap_global_poses[i];
+    }
+    // Everything added after the snapshot hangs off the last solved node by
+    // local SLAM's (rigid) relative poses: move it with that node.
+    const Node& last = nodes_[num_nodes - 1];
+    local_to_global_ = last.data.global_pose * last.data.local_pose.inverse();
+    for (size_t i = num_nodes; i < nodes_.size(); ++i) {
+      nodes_[i].data.global_pose = local_to_global_ * nodes_[i].data.local_pose;
+    }
+    for (size_t i = num_submaps; i < submaps_.size(); ++i) {
+      submaps_[i].state.global_pose = local_to_global_ * submaps_[i].state.local_pose;
+    }
+    ++stats_.num_optimizations;
+    stats_.last_solve_time_s = result.summary.solve_time_s;
+    stats_.total_solve_time_s += result.summary.solve_time_s;
+    for (const Submap& s : submaps_) all_submap_poses.push_back(s.state.global_pose);
+  }
+  if (callback_) callback_(all_submap_poses);
+}
+
+void PoseGraph::RunFinalOptimization() {
+  int num_nodes = 0, num_submaps = 0;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    num_nodes = static_cast<int>(nodes_.size());
+    num_submaps = static_cast<int>(submaps_.size());
+    nodes_since_optimization_ = 0;
+  }
+  work_queue_.Schedule([this, num_nodes, num_submaps] { Optimize(num_nodes, num_submaps); });
+  work_queue_.WaitUntilIdle();
+}
+
+void PoseGraph::WaitForPendingWork() { work_queue_.WaitUntilIdle(); }
+
+std::vector<TimedPose> PoseGraph::GetNodePoses() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  std::vector<TimedPose> poses;
+  poses.reserve(nodes_.size());
+  for (const Node& n : nodes_) poses.push_back({n.data.time_s, n.data.global_pose});
+  return poses;
+}
+
+std::vector<geometry::Rigid2d> PoseGraph::GetSubmapGlobalPoses() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  std::vector<geometry::Rigid2d> poses;
+  for (const Submap& s : submaps_) poses.push_back(s.state.global_pose);
+  return poses;
+}
+
+std::vector<SubmapState> PoseGraph::GetSubmaps() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  std::vector<SubmapState> states;
+  for (const Submap& s : submaps_) states.push_back(s.state);
+  return states;
+}
+
+std::vector<Constraint> PoseGraph::GetConstraints() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return constraints_;
+}
+
+geometry::Rigid2d PoseGraph::GetLocalToGlobal() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return local_to_global_;
+}
+
+PoseGraphStats PoseGraph::GetStats() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return stats_;
+}
+
+}  // namespace scout::slam

@@ -1,0 +1,149 @@
+#ifndef SCOUT_SLAM_POSE_GRAPH_H_
+#define SCOUT_SLAM_POSE_GRAPH_H_
+
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <vector>
+
+#include "scout/geometry/rigid_transform.h"
+#include "scout/grid/probability_grid.h"
+#include "scout/slam/constraint_builder.h"
+#include "scout/slam/optimization_problem.h"
+#include "scout/slam/point_cloud.h"
+#include "scout/slam/pose_graph_types.h"
+#include "scout/slam/work_queue.h"
+
+namespace scout::slam {
+
+// Global SLAM settings (ALGORITHMS §7, Cartographer's 2D defaults).
+struct PoseGraphOptions {
+  // A solve runs after every this many added nodes (0: only on request).
+  int optimize_every_n_nodes = 90;
+  // Run constraint search and solves in the calling thread, in a fixed order
+  // (tests, lockstep evaluation). Otherwise one background thread does them.
+  bool synchronous = false;
+  // Weights of the node-to-insertion-submap constraints. Far below the loop
+  // closure weights: they encode local SLAM's drift-prone placement.
+  double intra_submap_translation_weight = 5e2;
+  double intra_submap_rotation_weight = 1.6e3;
+  // Scans are thinned further for loop-closure search than for local SLAM:
+  // branch and bound costs grow with the number of points.
+  AdaptiveVoxelFilterOptions loop_closure_voxel_filter{
+      .max_length_m = 0.9, .min_num_points = 100, .max_range_m = 50.0};
+  ConstraintBuilderOptions constraint_builder;
+  OptimizationProblemOptions optimization_problem;
+};
+
+// Throws std::invalid_argument naming the option when one is out of range.
+void Validate(const PoseGraphOptions& options);
+
+// A submap as local SLAM reports it with a node inserted into it.
+struct InsertedSubmap {
+  int id = 0;
+  geometry::Rigid2d local_pose;                       // submap frame -> local SLAM frame
+  std::shared_ptr<const grid::ProbabilityGrid> grid;  // snapshot after the insertion
+  bool finished = false;
+};
+
+struct PoseGraphStats {
+  int num_nodes = 0;
+  int num_submaps = 0;
+  int num_optimizations = 0;
+  int num_loop_closures = 0;  // accepted inter-submap constraints
+  int num_searches = 0;       // (node, submap) pairs searched for a loop closure
+  double total_solve_time_s = 0.0;
+  double last_solve_time_s = 0.0;
+};
+
+struct TimedPose {
+  double time_s = 0.0;
+  geometry::Rigid2d pose;
+};
+
+struct SubmapState {
+  geometry::Rigid2d local_pose;
+  geometry::Rigid2d global_pose;
+  std::shared_ptr<const grid::ProbabilityGrid> grid;
+  bool finished = false;
+};
+
+// The pose graph of global SLAM: nodes (one per inserted scan) and submaps,
+// intra-submap constraints from local SLAM, loop closures from the constraint
+// builder, and sparse pose adjustment every N nodes. Public methods are
+// thread-safe; call AddNode from one thread.
+class PoseGraph {
+ public:
+  // Receives the global pose of every submap after each solve, indexed by
+  // submap id. Called on the worker thread in background mode.
+  using OptimizationCallback = std::function<void(const std::vector<geometry::Rigid2d>&)>;
+
+  // Throws std::invalid_argument if 'options' are invalid.
+  PoseGraph(const PoseGraphOptions& options, OptimizationCallback callback);
+  // Finishes pending work (no final solve; see RunFinalOptimization).
+  ~PoseGraph();
+
+  // Adds a node at robot pose 'local_pose' (local SLAM frame) whose scan
+  // 'points' (robot frame) went into 'insertion_submaps'. New submap ids must
+  // continue the dense numbering; known ones get the new grid snapshot.
+  // Returns the node id (dense from 0). Throws std::invalid_argument on a
+  // gap in submap ids or a missing grid.
+  int AddNode(double time_s, const geometry::Rigid2d& local_pose, const PointCloud& points,
+              const std::vector<InsertedSubmap>& insertion_submaps,
+              std::optional<geometry::Rigid2d> odometry_pose = std::nullopt);
+
+  // Waits for all pending searches and solves, then solves once more.
+  void RunFinalOptimization();
+  // Returns once all work scheduled so far is done.
+  void WaitForPendingWork();
+
+  // Returns the global pose and scan time of every node, by node id.
+  std::vector<TimedPose> GetNodePoses() const;
+  // Returns the global pose of every submap, by submap id.
+  std::vector<geometry::Rigid2d> GetSubmapGlobalPoses() const;
+  // Returns poses and the latest grid of every submap, by submap id.
+  std::vector<SubmapState> GetSubmaps() const;
+  // Returns every constraint found so far.
+  std::vector<Constraint> GetConstraints() const;
+  // Returns the transform that maps local SLAM poses into the global frame,
+  // as of the latest solve.
+  geometry::Rigid2d GetLocalToGlobal() const;
+  PoseGraphStats GetStats() const;
+
+ private:
+  struct Node {
+    OptimizationNode data;
+    std::shared_ptr<const PointCloud> points;  // thinned, robot frame
+    std::vector<int> submap_ids;               // insertion submaps
+  };
+  struct Submap {
+    SubmapState state;
+    std::vector<int> node_ids;  // nodes inserted into it
+  };
+
+  // Background steps, run in scheduling order by work_queue_.
+  void ComputeConstraints(int node_id, const std::vector<int>& newly_finished);
+  void SearchPair(int node_id, int submap_id);
+  void Optimize(int num_nodes, int num_submaps);
+
+  const PoseGraphOptions options_;
+  const OptimizationCallback callback_;
+  const OptimizationProblem optimization_problem_;
+  ConstraintBuilder constraint_builder_;  // only touched by queued steps
+
+  mutable std::mutex mutex_;
+  std::vector<Node> nodes_;
+  std::vector<Submap> submaps_;
+  std::vector<Constraint> constraints_;
+  geometry::Rigid2d local_to_global_;
+  int nodes_since_optimization_ = 0;
+  PoseGraphStats stats_;
+
+  // Declared last: destroyed first, so queued steps never see dead members.
+  WorkQueue work_queue_;
+};
+
+}  // namespace scout::slam
+
+#endif  // SCOUT_SLAM_POSE_GRAPH_H_
