@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -53,11 +54,19 @@ ScanMatchResult RealTimeCorrelativeScanMatcher::Match(
       static_cast<int>(std::ceil(options_.angular_search_window_rad / angle_step));
   const int linear_bound =
       static_cast<int>(std::ceil(options_.linear_search_window_m / resolution));
-  const auto probability = [&grid](const grid::CellIndex& cell) {
-    const uint16_t v = grid.value(cell);
-    // Unknown counts as free: a scan must be pulled onto observed walls.
-    return v == grid::kUnknownValue ? grid::kMinProbability : grid::ValueToProbability(v);
+  // Probability is linear in the raw cell value, so candidates sum raw values
+  // (an integer, cheaper than decoding each cell) and decode the mean once.
+  // Unknown and outside cells count as value 1, i.e. kMinProbability: a scan
+  // must be pulled onto observed walls, not into unexplored space.
+  const std::vector<uint16_t>& values = grid.values();
+  const auto raw_value = [&](int x, int y) -> int64_t {
+    if (x < 0 || y < 0 || x >= limits.width() || y >= limits.height()) return 1;
+    const int v = values[static_cast<size_t>(y) * limits.width() + x] & grid::kMaxValue;
+    return v == grid::kUnknownValue ? 1 : v;
   };
+  const double min_probability = grid::ValueToProbability(1);
+  const double probability_per_value =
+      (grid::ValueToProbability(grid::kMaxValue) - min_probability) / (grid::kMaxValue - 1);
 
   std::vector<grid::CellIndex> cells(points.size());
   for (int k = -num_angles_each_side; k <= num_angles_each_side; ++k) {
@@ -69,11 +78,15 @@ ScanMatchResult RealTimeCorrelativeScanMatcher::Match(
       cells[i] = limits.CellContaining(rotated * points[i]);
     for (int x = -linear_bound; x <= linear_bound; ++x) {
       for (int y = -linear_bound; y <= linear_bound; ++y) {
-        double sum = 0.0;
-        for (const grid::CellIndex& cell : cells) sum += probability({cell.x + x, cell.y + y});
+        int64_t sum = 0;
+        for (const grid::CellIndex& cell : cells) sum += raw_value(cell.x + x, cell.y + y);
+        const double mean_probability =
+            min_probability +
+            (static_cast<double>(sum) / static_cast<double>(points.size()) - 1.0) *
+                probability_per_value;
         const double squared_shift_m2 = resolution * resolution * (x * x + y * y);
         const double score =
-            sum / static_cast<double>(points.size()) *
+            mean_probability *
             std::exp(-(options_.translation_delta_cost_weight * squared_shift_m2 +
                        options_.rotation_delta_cost_weight * delta_angle * delta_angle));
         if (score > best.score) {
