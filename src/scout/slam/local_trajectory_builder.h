@@ -53,7 +53,8 @@ struct InsertionResult {
   PointCloud filtered_points;
   // The submaps this scan was inserted into (oldest first), each with a
   // snapshot of its grid after the insertion, its local pose, scan origins
-  // and finished flag.
+  // and finished flag. Release these snapshots once consumed: while one is
+  // held, the next insertion into that submap copies its grid first.
   std::vector<events::SubmapChanged> insertion_submaps;
   // Submaps created / finished by this insertion (ids dense from 0).
   std::vector<events::SubmapId> created_submaps;
