@@ -180,9 +180,9 @@ class CarmenParser {
     if (!dataset_->odometry.empty() && time < dataset_->odometry.back().time_s) {
       ++counts_->backwards_odometry;
       warnings_.Add("odometry messages with backwards time",
-                    Where() + ": ODOM at t=" + std::to_string(time) +
+                    Where() + ": ODOM at t=" + FormatNumber(time) +
                         " s is earlier than the previous one (t=" +
-                        std::to_string(dataset_->odometry.back().time_s) +
+                        FormatNumber(dataset_->odometry.back().time_s) +
                         " s); dropped (expected non-decreasing ipc_timestamp)");
       return std::nullopt;
     }
@@ -218,9 +218,9 @@ class CarmenParser {
     if (!dataset_->scans.empty() && scan.time_s < dataset_->scans.back().time_s) {
       ++counts_->backwards_scans;
       warnings_.Add("scans with backwards time",
-                    Where() + ": " + kind + " at t=" + std::to_string(scan.time_s) +
+                    Where() + ": " + kind + " at t=" + FormatNumber(scan.time_s) +
                         " s is earlier than the previous scan (t=" +
-                        std::to_string(dataset_->scans.back().time_s) +
+                        FormatNumber(dataset_->scans.back().time_s) +
                         " s); dropped (expected non-decreasing ipc_timestamp)");
       return false;
     }

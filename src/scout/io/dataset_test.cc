@@ -53,6 +53,7 @@ TEST(Dataset, DetectsCarmenLogsByContentAndRejectsOtherFiles) {
   const fs::path old_bag = dir.Write("old.bag", "#ROSBAG V1.2\n...");
   EXPECT_NE(ThrownMessage(old_bag).find(old_bag.string() + ": ROS bag of format 'ROSBAG V1.2'"),
             std::string::npos);
+  EXPECT_NE(ThrownMessage(dir.path()).find(": is a directory"), std::string::npos);
   const fs::path empty = dir.Write("empty.log", "");
   EXPECT_NE(ThrownMessage(empty).find(empty.string() + ": no usable laser scan"),
             std::string::npos);

@@ -24,6 +24,11 @@ struct GzCloser {
 using GzHandle = std::unique_ptr<gzFile_s, GzCloser>;
 
 GzHandle OpenGz(const fs::path& path) {
+  // zlib would open a directory and fail only on the first read, with a
+  // message that suggests a corrupt file.
+  if (fs::is_directory(path)) {
+    throw InputError(path.string() + ": is a directory; expected a dataset file");
+  }
   gzFile file = gzopen(path.c_str(), "rb");
   if (file == nullptr) {
     throw InputError(path.string() + ": cannot open for reading (" + std::strerror(errno) + ")");

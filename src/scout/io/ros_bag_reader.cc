@@ -102,15 +102,15 @@ class BagConverter {
   void AddScan(const sensor_msgs::LaserScan& message, const ros::Time& bag_time) {
     const double time = StampOrBagTime(message.header.stamp, bag_time);
     if (message.ranges.empty()) {
-      warnings_.Add("scans without beams", source_ + ": LaserScan at t=" + std::to_string(time) +
+      warnings_.Add("scans without beams", source_ + ": LaserScan at t=" + FormatNumber(time) +
                                                " s has 0 beams; skipped (expected ranges)");
       return;
     }
     if (!dataset_->scans.empty() && time < dataset_->scans.back().time_s) {
       warnings_.Add("scans with backwards time",
-                    source_ + ": LaserScan at t=" + std::to_string(time) +
+                    source_ + ": LaserScan at t=" + FormatNumber(time) +
                         " s is earlier than the previous scan (t=" +
-                        std::to_string(dataset_->scans.back().time_s) + " s); dropped");
+                        FormatNumber(dataset_->scans.back().time_s) + " s); dropped");
       return;
     }
     sensor::LaserScan scan;
@@ -127,9 +127,9 @@ class BagConverter {
     const double time = StampOrBagTime(message.header.stamp, bag_time);
     if (!dataset_->odometry.empty() && time < dataset_->odometry.back().time_s) {
       warnings_.Add("odometry messages with backwards time",
-                    source_ + ": Odometry at t=" + std::to_string(time) +
+                    source_ + ": Odometry at t=" + FormatNumber(time) +
                         " s is earlier than the previous one (t=" +
-                        std::to_string(dataset_->odometry.back().time_s) + " s); dropped");
+                        FormatNumber(dataset_->odometry.back().time_s) + " s); dropped");
       return;
     }
     const geometry_msgs::Pose& pose = message.pose.pose;
