@@ -66,6 +66,37 @@ inline std::vector<Wall> CorridorLoop() {
   return walls;
 }
 
+// A pose on the corridor centre line (see CorridorLoop) at arc length 's',
+// counter-clockwise from (-7.5, -4.5), with corners rounded to a 1 m radius
+// so a differential drive could follow it. One lap is 44 + 2 pi metres.
+inline geometry::Rigid2d RoundedLoopPose(double s) {
+  constexpr double kRadius = 1.0;
+  const double straight[4] = {17.0 - 2 * kRadius, 9.0 - 2 * kRadius, 17.0 - 2 * kRadius,
+                              9.0 - 2 * kRadius};
+  const Eigen::Vector2d corner_centres[4] = {{8.5 - kRadius, -4.5 + kRadius},
+                                             {8.5 - kRadius, 4.5 - kRadius},
+                                             {-8.5 + kRadius, 4.5 - kRadius},
+                                             {-8.5 + kRadius, -4.5 + kRadius}};
+  const double arc = 0.5 * M_PI * kRadius;
+  const double lap = straight[0] + straight[1] + straight[2] + straight[3] + 4 * arc;
+  s = std::fmod(s, lap);
+  Eigen::Vector2d start(-8.5 + kRadius, -4.5);
+  for (int side = 0; side < 4; ++side) {
+    const double heading = side * 0.5 * M_PI;
+    const Eigen::Vector2d dir(std::cos(heading), std::sin(heading));
+    if (s < straight[side]) return geometry::Rigid2d(start + s * dir, heading);
+    s -= straight[side];
+    if (s < arc) {
+      const double a = s / kRadius;  // angle turned along the corner
+      const Eigen::Vector2d from_centre(std::sin(heading + a), -std::cos(heading + a));
+      return geometry::Rigid2d(corner_centres[side] + kRadius * from_centre, heading + a);
+    }
+    s -= arc;
+    start = corner_centres[side] + kRadius * Eigen::Vector2d(std::cos(heading), std::sin(heading));
+  }
+  return geometry::Rigid2d(start, 0.0);  // s == lap up to rounding
+}
+
 // Returns the range to the first wall hit along the ray, +infinity if none.
 inline double CastRay(const std::vector<Wall>& walls, const Eigen::Vector2d& origin,
                       const Eigen::Vector2d& direction) {
