@@ -19,7 +19,8 @@ constexpr double kDefaultResolutionM = 0.05;
 constexpr uint8_t kUnknownGrey = 205;  // the map_server shade of unknown
 using Rgb = std::array<uint8_t, 3>;
 constexpr Rgb kStartColour = {20, 170, 40};
-constexpr Rgb kEndColour = {220, 20, 20};
+constexpr Rgb kEndColour = {255, 170, 0};
+constexpr Rgb kMarkOutline = {0, 0, 0};
 constexpr Rgb kPathStartColour = {20, 80, 255};
 constexpr Rgb kPathEndColour = {230, 40, 40};
 
@@ -118,7 +119,10 @@ void DrawTrajectory(const std::vector<StampedPose>& trajectory, Canvas& canvas) 
     const double f = static_cast<double>(k) / (trajectory.size() - 1);
     canvas.Line(cell(k - 1), cell(k), line_radius, Blend(kPathStartColour, kPathEndColour, f));
   }
+  // Outlined, so that the marks stand out on the path and on free space alike.
+  canvas.Disc(cell(trajectory.size() - 1), mark_radius + 1, kMarkOutline);
   canvas.Disc(cell(trajectory.size() - 1), mark_radius, kEndColour);
+  canvas.Disc(cell(0), mark_radius + 1, kMarkOutline);
   canvas.Disc(cell(0), mark_radius, kStartColour);
 }
 

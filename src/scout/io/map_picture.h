@@ -19,7 +19,7 @@ using GlobalSubmaps =
 // Writes a PNG picture of the submaps fused by grid::FuseSubmaps: free white,
 // occupied black, unknown grey; over it 'trajectory' as a polyline whose
 // colour runs from blue (start) to red (end), a green disc at the first pose
-// and a red disc at the last. The picture covers the submaps and the
+// and an orange one at the last. The picture covers the submaps and the
 // trajectory, at the finest submap resolution (0.05 m without submaps)
 // coarsened so that neither side exceeds 'max_side_px'; its top row is the
 // map's max-y row. Written through a temporary file and rename. Throws

@@ -50,7 +50,8 @@ TEST(WriteMapPicture, DrawsTheFusedMapAndTheTrajectoryInColour) {
   const uint8_t* start = at(2.06, 3.06);
   EXPECT_GT(start[1], start[0]);  // green start mark
   const uint8_t* end = at(4.06, 6.94);
-  EXPECT_GT(end[0], end[1]);  // red end mark
+  EXPECT_GT(end[0], end[1]);  // orange end mark, not the red end of the path
+  EXPECT_GT(end[1], 100);
   int coloured = 0;
   for (int y = 0; y < image.height; ++y) {
     for (int x = 0; x < image.width; ++x) coloured += IsColoured(image.at(x, y));
