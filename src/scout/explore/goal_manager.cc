@@ -66,7 +66,8 @@ GoalManager::GoalManager(const GoalManagerOptions& options,
       planner_(planner),
       follower_(follower),
       policy_(std::move(policy)),
-      failed_(options.failed_goals) {
+      failed_(options.failed_goals),
+      visited_(options.failed_goals) {
   Validate(options_);
   Validate(traversability_);
   if (!policy_) throw std::invalid_argument("GoalManager: no goal policy");
@@ -102,6 +103,7 @@ void GoalManager::RefreshMap(const ExploreInput& in) {
                                        planner_.options().clearance_weight > 0.0);
   map_dirty_ = false;
   counters_.goals_retried += failed_.RetryChangedGoals(*map_, in.submaps);
+  visited_.RetryChangedGoals(*map_, in.submaps);
 }
 
 GoalManager::Selection GoalManager::SelectAndPlan(const ExploreInput& in) {
@@ -116,9 +118,15 @@ GoalManager::Selection GoalManager::SelectAndPlan(const ExploreInput& in) {
   pi.frontier = &frontier;
   pi.robot = robot;
   if (goal_) pi.current_goal = Resolve(*goal_, in.submaps);
+  // Reached goals are avoided like failed ones until the map around them
+  // changes: a frontier that stays after arrival cannot be seen from there.
+  std::vector<Eigen::Vector2d> blacklisted = failed_.Blacklisted(in.submaps);
+  const std::vector<Eigen::Vector2d> visited = visited_.Blacklisted(in.submaps);
+  blacklisted.insert(blacklisted.end(), visited.begin(), visited.end());
+  pi.avoid = &blacklisted;
+  pi.avoid_radius_m = options_.failed_goals.blacklist_radius_m;
 
   Selection sel;
-  std::vector<Eigen::Vector2d> blacklisted = failed_.Blacklisted(in.submaps);
   int attempts = 0;
   for (const GoalCandidate& c : policy_->Rank(pi)) {
     if (failed_.IsNear(c.position, blacklisted)) continue;
@@ -224,6 +232,7 @@ void GoalManager::Drive(const ExploreInput& in, ExploreStatus& status) {
       EndGoal(ExploreState::kFinished);
     } else {
       ++counters_.goals_reached;
+      visited_.RecordFailure(Resolve(*goal_, in.submaps), in.submaps, *map_);
       EndGoal(ExploreState::kReached);
     }
     return;

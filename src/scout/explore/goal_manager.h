@@ -145,6 +145,8 @@ class GoalManager {
   PathFollower follower_;
   std::unique_ptr<GoalPolicy> policy_;
   FailedGoalMemory failed_;
+  // Reached goals, kept out of selection until the map around them changes.
+  FailedGoalMemory visited_;
 
   ExploreState state_ = ExploreState::kIdle;
   bool started_once_ = false;

@@ -38,8 +38,16 @@ class ScoutPolicy : public GoalPolicy {
   std::string_view name() const override { return "scout"; }
   bool needs_path_distances() const override { return true; }
   std::vector<GoalCandidate> Rank(const PolicyInput& in) const override {
+    std::vector<Eigen::Vector2d> frontier;
+    const double r2 = in.avoid_radius_m * in.avoid_radius_m;
+    for (const Eigen::Vector2d& p : *in.frontier) {
+      const auto near = [&](const Eigen::Vector2d& a) { return (a - p).squaredNorm() <= r2; };
+      if (!in.avoid || std::none_of(in.avoid->begin(), in.avoid->end(), near)) {
+        frontier.push_back(p);
+      }
+    }
     std::vector<GoalCandidate> goals;
-    for (const NavigationPoint& p : ComputeNavigationPoints(*in.map, *in.distances, *in.frontier,
+    for (const NavigationPoint& p : ComputeNavigationPoints(*in.map, *in.distances, frontier,
                                                             in.robot, in.current_goal, options_)) {
       goals.push_back({p.position, p.revenue});
     }

@@ -24,6 +24,11 @@ struct PolicyInput {
   Eigen::Vector2d robot = Eigen::Vector2d::Zero();
   // The goal being driven to, if any (for hysteresis).
   std::optional<Eigen::Vector2d> current_goal;
+  // Blacklisted goals. The goal manager drops candidates within avoid_radius_m
+  // of them; "scout" also drops such frontier points before clustering, so a
+  // component whose nearest point failed offers its next point instead.
+  const std::vector<Eigen::Vector2d>* avoid = nullptr;
+  double avoid_radius_m = 0.0;
 };
 
 struct GoalCandidate {

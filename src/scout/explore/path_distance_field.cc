@@ -11,49 +11,78 @@ PathDistanceField::PathDistanceField(const PlanningMap& map, const Eigen::Vector
   start_ = map.NearestTraversable(robot, map.options().inflation_radius_m());
   if (!start_) return;
 
-  // Dijkstra in cell units; the heap holds (distance, flat) with lazy deletion.
-  std::vector<float> d(limits_.num_cells(), kUnreachable);
-  using Entry = std::pair<float, int64_t>;
-  std::vector<Entry> heap;
-  heap.reserve(1024);
-  const auto later = [](const Entry& a, const Entry& b) { return a.first > b.first; };
-  const int64_t s = limits_.FlatIndex(*start_);
-  d[s] = 0.0f;
-  heap.push_back({0.0f, s});
-  const float kStep[8] = {
+  // Dijkstra in cell units over a copy of the traversability mask padded by
+  // one closed cell, so the inner loop needs no bounds checks.
+  const int w = limits_.width(), h = limits_.height();
+  const int pw = w + 2;
+  std::vector<uint8_t> open(static_cast<size_t>(pw) * (h + 2), 0);
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) open[(y + 1) * pw + x + 1] = map.traversable(int64_t{y} * w + x);
+  }
+  std::vector<float> d(open.size(), kUnreachable);
+  const int64_t step[8] = {1, -1, pw, -pw, pw + 1, -pw + 1, pw - 1, -pw - 1};
+  // For a diagonal step, the two orthogonal cells it passes between.
+  const int64_t side_a[8] = {0, 0, 0, 0, 1, 1, -1, -1};
+  const int64_t side_b[8] = {0, 0, 0, 0, pw, -pw, pw, -pw};
+  const float cost[8] = {
       1, 1, 1, 1, float(M_SQRT2), float(M_SQRT2), float(M_SQRT2), float(M_SQRT2)};
-  const int w = limits_.width();
-  while (!heap.empty()) {
-    std::pop_heap(heap.begin(), heap.end(), later);
-    const auto [du, u] = heap.back();
-    heap.pop_back();
-    if (du > d[u]) continue;
-    const grid::CellIndex cu = limits_.CellOfFlatIndex(u);
-    for (int k = 0; k < 8; ++k) {
-      if (!map.StepAllowed(cu, k)) continue;
-      const int64_t v = u + kNeighbourOffsets[k][0] + int64_t{kNeighbourOffsets[k][1]} * w;
-      const float dv = du + kStep[k];
-      if (dv < d[v]) {
-        d[v] = dv;
-        heap.push_back({dv, v});
-        std::push_heap(heap.begin(), heap.end(), later);
+  // Dial's bucket queue with buckets one cell wide: every step costs at least
+  // one cell, so a cell popped from bucket k can only improve cells in later
+  // buckets, and bucket k is final when its turn comes: exact, and O(cells).
+  // Steps cost at most sqrt 2 < 2, so three buckets in a ring suffice.
+  std::vector<uint32_t> bucket[3];
+  std::vector<uint8_t> done(open.size(), 0);
+  const uint32_t s = static_cast<uint32_t>((start_->y + 1) * pw + start_->x + 1);
+  d[s] = 0.0f;
+  bucket[0].push_back(s);
+  for (int64_t k = 0, pending = 1; pending > 0; ++k) {
+    std::vector<uint32_t>& current = bucket[k % 3];
+    for (size_t i = 0; i < current.size(); ++i) {
+      const uint32_t u = current[i];
+      --pending;
+      if (done[u]) continue;
+      done[u] = 1;
+      const float du = d[u];
+      for (int n = 0; n < 8; ++n) {
+        const int64_t v = u + step[n];
+        if (!open[v] || done[v]) continue;
+        if (n >= 4 && !(open[u + side_a[n]] && open[u + side_b[n]])) continue;
+        const float dv = du + cost[n];
+        if (dv < d[v]) {
+          d[v] = dv;
+          bucket[static_cast<int64_t>(dv) % 3].push_back(static_cast<uint32_t>(v));
+          ++pending;
+        }
       }
     }
+    current.clear();
   }
   // The robot may have started off its cell's centre (inside the band).
   const float offset = static_cast<float>((limits_.CellCenter(*start_) - robot).norm());
   const float res = static_cast<float>(limits_.resolution());
-  for (size_t i = 0; i < d.size(); ++i) {
-    if (std::isfinite(d[i])) distance_m_[i] = d[i] * res + offset;
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      const float di = d[(y + 1) * pw + x + 1];
+      if (std::isfinite(di)) distance_m_[int64_t{y} * w + x] = di * res + offset;
+    }
   }
 }
 
 std::optional<PathDistanceField::Reached> PathDistanceField::NearestReached(
     const Eigen::Vector2d& p, double radius_m) const {
+  // Inline rather than CellsWithin: this runs for every frontier point.
   std::optional<Reached> best;
-  for (const grid::CellIndex& c : CellsWithin(limits_, p, radius_m)) {
-    const float dist = distance_m_[limits_.FlatIndex(c)];
-    if (std::isfinite(dist) && (!best || dist < best->distance_m)) best = Reached{dist, c};
+  const grid::CellIndex centre = limits_.CellContaining(p);
+  const int r = static_cast<int>(std::ceil(radius_m / limits_.resolution()));
+  const double r2 = radius_m * radius_m;
+  for (int y = centre.y - r; y <= centre.y + r; ++y) {
+    for (int x = centre.x - r; x <= centre.x + r; ++x) {
+      const grid::CellIndex c{x, y};
+      if (!limits_.Contains(c)) continue;
+      if (!(c == centre) && (limits_.CellCenter(c) - p).squaredNorm() > r2) continue;
+      const float dist = distance_m_[limits_.FlatIndex(c)];
+      if (std::isfinite(dist) && (!best || dist < best->distance_m)) best = Reached{dist, c};
+    }
   }
   return best;
 }
