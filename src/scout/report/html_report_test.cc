@@ -1,0 +1,156 @@
+#include "scout/report/html_report.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <regex>
+
+#include "scout/common/atomic_file.h"
+#include "scout/common/error.h"
+#include "scout/report/compare.h"
+#include "scout/report/test_runs.h"
+#include "scout/report/xml_check.h"
+
+namespace scout::report {
+namespace {
+
+const ReportFile* FindFile(const std::vector<ReportFile>& files, const std::string& name) {
+  for (const ReportFile& f : files) {
+    if (f.name == name) return &f;
+  }
+  return nullptr;
+}
+
+// Nothing the page loads may come from elsewhere: every src/href is a data
+// URI or a fragment, and there are no scripts.
+void ExpectSelfContained(const std::string& html) {
+  // The SVG namespace is a name, not a resource.
+  std::string rest = html;
+  for (size_t p = rest.find("http://www.w3.org/2000/svg"); p != std::string::npos;
+       p = rest.find("http://www.w3.org/2000/svg")) {
+    rest.erase(p, 26);
+  }
+  EXPECT_EQ(rest.find("http://"), std::string::npos);
+  const std::regex reference(R"((src|href)\s*=\s*"([^"]*)\")");
+  for (auto it = std::sregex_iterator(html.begin(), html.end(), reference);
+       it != std::sregex_iterator(); ++it) {
+    const std::string target = (*it)[2];
+    EXPECT_TRUE(target.rfind("data:", 0) == 0 || target.rfind("#", 0) == 0) << target;
+  }
+  EXPECT_EQ(html.find("https://"), std::string::npos);
+  EXPECT_EQ(html.find("<script"), std::string::npos);
+  EXPECT_EQ(html.find("<link"), std::string::npos);
+  EXPECT_EQ(html.rfind("<!DOCTYPE html>", 0), 0u);
+  EXPECT_NE(html.find("</html>"), std::string::npos);
+}
+
+TEST(HtmlReport, RunReportIsSelfContainedAndHoldsTheTables) {
+  const std::vector<ReportFile> files = BuildRunReport(testing::WriteFrontierRun("report"));
+  ASSERT_EQ(files.size(), 5u);
+  EXPECT_EQ(files[0].name, "figures/local_points.svg");
+  const ReportFile* page = FindFile(files, "report.html");
+  ASSERT_NE(page, nullptr);
+  const std::string& html = page->content;
+  ExpectSelfContained(html);
+  // The map, embedded.
+  EXPECT_NE(html.find("src=\"data:image/png;base64,iVBORw0KGgo"), std::string::npos);
+  // Per-strategy values: direct's P, accuracy, recall, time per round, points.
+  EXPECT_NE(html.find("<td>direct</td><td class=\"num\">88.89</td><td class=\"num\">99.722</td>"
+                      "<td class=\"num\">100.000</td><td class=\"num\">99.167</td>"
+                      "<td class=\"num\">0.135</td><td class=\"num\">40</td>"),
+            std::string::npos)
+      << html;
+  // Summary and options, flattened.
+  EXPECT_NE(html.find("<td>world</td><td>office</td>"), std::string::npos);
+  EXPECT_NE(html.find("<td>epsilon_m</td><td class=\"num\">0.1</td>"), std::string::npos);
+  EXPECT_NE(html.find("<td>config.frontier.inflation_radius_m</td><td class=\"num\">0.3</td>"),
+            std::string::npos);
+  // All four figures inline, each a well-formed SVG.
+  size_t at = 0;
+  for (int i = 0; i < 4; ++i) {
+    const size_t begin = html.find("<svg", at);
+    ASSERT_NE(begin, std::string::npos) << i;
+    const size_t end = html.find("</svg>", begin) + 6;
+    EXPECT_EQ(testing::CheckXml(html.substr(begin, end - begin)).error, "") << i;
+    at = end;
+  }
+  EXPECT_EQ(html.find("<svg", at), std::string::npos);
+}
+
+TEST(HtmlReport, ExploreRunWithoutFrontierData) {
+  const std::vector<ReportFile> files = BuildRunReport(testing::WriteExploreRun("explore", 1.0));
+  const ReportFile* page = FindFile(files, "report.html");
+  ASSERT_NE(page, nullptr);
+  ExpectSelfContained(page->content);
+  EXPECT_NE(page->content.find("<td>goal_policy</td><td>reachable</td>"), std::string::npos);
+  EXPECT_EQ(page->content.find("Frontier update strategies"), std::string::npos);
+  EXPECT_NE(FindFile(files, "figures/coverage_path.svg"), nullptr);
+}
+
+TEST(Compare, TwoRunsSideBySide) {
+  const std::filesystem::path a = testing::WriteFrontierRun("eps_a");
+  const std::filesystem::path b = testing::WriteFrontierRun("eps_b");
+  std::string summary = testing::kSummaryJson;
+  summary.replace(summary.find("\"P\": 0.888889"), 13, "\"P\": 0.5");
+  WriteTextFileAtomically(b / "summary.json", summary);
+  const std::vector<ReportFile> files =
+      BuildComparison({a, b, testing::WriteExploreRun("explore_b", 2.0)});
+  const ReportFile* page = FindFile(files, "compare.html");
+  ASSERT_NE(page, nullptr);
+  const std::string& html = page->content;
+  ExpectSelfContained(html);
+  EXPECT_NE(html.find("<th></th><th>eps_a</th><th>eps_b</th><th>explore_b</th>"),
+            std::string::npos);
+  EXPECT_NE(html.find("<td>world / dataset</td><td>office</td><td>office</td><td>museum</td>"),
+            std::string::npos);
+  EXPECT_NE(html.find("<td>P (%) (direct)</td><td class=\"num\">88.89</td>"
+                      "<td class=\"num\">50.00</td><td>–</td>"),
+            std::string::npos)
+      << html;
+  EXPECT_NE(html.find("<td>strategy / goal policy</td>"), std::string::npos);
+  EXPECT_NE(html.find("<td>reachable</td>"), std::string::npos);
+  const ReportFile* p = FindFile(files, "figures/compare_p.svg");
+  ASSERT_NE(p, nullptr);
+  const testing::XmlCheck xml = testing::CheckXml(p->content);
+  ASSERT_EQ(xml.error, "");
+  EXPECT_EQ(xml.classes.at("series"), 3);  // one per run
+  EXPECT_EQ(xml.classes.at("bar"), 4);     // dfd and direct of the two frontier runs
+  EXPECT_NE(FindFile(files, "figures/compare_coverage_path.svg"), nullptr);
+}
+
+TEST(Compare, SameNamedDirectoriesAreDisambiguated) {
+  const std::filesystem::path a = testing::WriteFrontierRun("x/out");
+  const std::filesystem::path b = testing::WriteFrontierRun("y/out");
+  const std::vector<ReportFile> files = BuildComparison({a, b});
+  EXPECT_NE(files.back().content.find("<th>out (2)</th>"), std::string::npos);
+  EXPECT_THROW(BuildComparison({}), InputError);
+}
+
+// Renders report.html in headless Chromium when it is installed: the page
+// must load and its DOM must hold the figures.
+TEST(HtmlReport, RendersInHeadlessChromium) {
+  if (std::system("command -v chromium > /dev/null 2>&1") != 0) {
+    GTEST_SKIP() << "chromium is not installed (Debian package 'chromium'); render check skipped";
+  }
+  const std::filesystem::path dir = testing::WriteFrontierRun("chromium");
+  for (const ReportFile& f : BuildRunReport(dir)) {
+    std::filesystem::create_directories((dir / f.name).parent_path());
+    WriteTextFileAtomically(dir / f.name, f.content);
+  }
+  const std::filesystem::path dom = dir / "dom.html";
+  const std::string command = "chromium --headless --disable-gpu --no-sandbox --user-data-dir=" +
+                              (dir / "profile").string() + " --dump-dom file://" +
+                              (dir / "report.html").string() + " > " + dom.string() + " 2> " +
+                              (dir / "chromium.log").string();
+  ASSERT_EQ(std::system(command.c_str()), 0) << command;
+  std::ifstream in(dom);
+  const std::string rendered{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  EXPECT_NE(rendered.find("Scout report: chromium"), std::string::npos);
+  EXPECT_NE(rendered.find("Points re-queried per optimisation round"), std::string::npos);
+  EXPECT_NE(rendered.find("<svg"), std::string::npos);
+  EXPECT_NE(rendered.find("88.89"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace scout::report
