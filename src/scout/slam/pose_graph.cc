@@ -1,6 +1,7 @@
 #include "scout/slam/pose_graph.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 #include <utility>
