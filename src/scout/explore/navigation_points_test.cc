@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <set>
 
+#include "scout/explore/path_planner.h"
 #include "scout/explore/test_maps.h"
 
 namespace scout::explore {
@@ -175,6 +176,12 @@ RC_GTEST_PROP(NavigationPointsProperty, PointsAreReachableFrontierPoints, ()) {
     RC_ASSERT(std::abs(reached->distance_m - p.cost_m) < 1e-4);
     const grid::CellIndex c = map.limits().CellContaining(p.position);
     RC_ASSERT(seen.insert({c.x, c.y}).second);
+    // The planner agrees: a path exists and is no shorter than the cost.
+    const auto path = PathPlanner({}).Plan(map, robot, p.position);
+    RC_ASSERT(path.has_value());
+    RC_ASSERT(std::abs(path->cell_path_length_m -
+                       (p.cost_m - (robot - map.limits().CellCenter(*field.start())).norm())) <
+              1e-3);
   }
 }
 

@@ -63,19 +63,26 @@ std::optional<PlannedPath> PathPlanner::Plan(const PlanningMap& map, const Eigen
   std::vector<float> g(limits.num_cells(), kInf);
   std::vector<uint8_t> parent(limits.num_cells(), kNoParent);
   std::vector<uint8_t> closed(limits.num_cells(), 0);
-  using Entry = std::pair<float, int64_t>;  // (f, flat)
+  struct Entry {
+    float f, h;
+    int64_t flat;
+  };
   std::vector<Entry> open;
-  const auto later = [](const Entry& a, const Entry& b) { return a.first > b.first; };
+  // Among equal f, expand the cell nearest the goal first: on open floors
+  // octile ties are everywhere, and this cuts the expansions severalfold.
+  const auto later = [](const Entry& a, const Entry& b) {
+    return a.f != b.f ? a.f > b.f : a.h > b.h;
+  };
   const int64_t s = limits.FlatIndex(*start_cell);
   g[s] = 0.0f;
-  open.push_back({heuristic(*start_cell), s});
+  open.push_back({heuristic(*start_cell), heuristic(*start_cell), s});
   const float kStep[8] = {
       1, 1, 1, 1, float(M_SQRT2), float(M_SQRT2), float(M_SQRT2), float(M_SQRT2)};
   PlannedPath path;
   int64_t reached = -1;
   while (!open.empty()) {
     std::pop_heap(open.begin(), open.end(), later);
-    const int64_t u = open.back().second;
+    const int64_t u = open.back().flat;
     open.pop_back();
     if (closed[u]) continue;
     closed[u] = 1;
@@ -93,7 +100,8 @@ std::optional<PlannedPath> PathPlanner::Plan(const PlanningMap& map, const Eigen
       const float gv = g[u] + kStep[k] * StepFactor(map, v);
       if (gv < g[v]) {
         g[v] = gv, parent[v] = static_cast<uint8_t>(k);
-        open.push_back({gv + heuristic(cv), v});
+        const float hv = heuristic(cv);
+        open.push_back({gv + hv, hv, v});
         std::push_heap(open.begin(), open.end(), later);
       }
     }
