@@ -99,7 +99,7 @@ class CarmenParser {
   std::optional<std::string> ParseFlaser(const std::vector<std::string_view>& f) {
     const std::optional<std::size_t> n = f.size() > 1 ? ParseCount(f[1]) : std::nullopt;
     if (!n) return "expected the beam count as field 2";
-    if (f.size() != *n + 11) {
+    if (*n > f.size() || f.size() != *n + 11) {  // first test: no overflow
       return "expected " + std::to_string(*n + 11) + " fields for " + std::to_string(*n) +
              " beams (FLASER n r1..rn x y theta odom_x odom_y odom_theta ipc_timestamp "
              "ipc_hostname logger_timestamp), found " +
@@ -134,9 +134,11 @@ class CarmenParser {
   std::optional<std::string> ParseRobotLaser(const std::vector<std::string_view>& f) {
     const std::optional<std::size_t> n = f.size() > 8 ? ParseCount(f[8]) : std::nullopt;
     if (!n) return "expected the beam count num_readings as field 9";
-    const std::optional<std::size_t> m = f.size() > *n + 9 ? ParseCount(f[*n + 9]) : std::nullopt;
+    // Counts are compared before adding them, so absurd ones cannot overflow.
+    const std::optional<std::size_t> m =
+        *n < f.size() && f.size() - *n > 9 ? ParseCount(f[*n + 9]) : std::nullopt;
     if (!m) return "expected num_remissions as field " + std::to_string(*n + 10);
-    if (f.size() != *n + *m + 24) {
+    if (*m > f.size() || f.size() != *n + *m + 24) {
       return "expected " + std::to_string(*n + *m + 24) + " fields for " + std::to_string(*n) +
              " beams and " + std::to_string(*m) + " remissions, found " + std::to_string(f.size());
     }

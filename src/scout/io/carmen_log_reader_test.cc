@@ -148,6 +148,22 @@ TEST(CarmenLogReader, MessagesGoingBackInTimeAreDroppedPerStream) {
   EXPECT_TRUE(AnyWarningContains(dataset, path.string() + ":5: ODOM at t=0"));
 }
 
+TEST(CarmenLogReader, AbsurdBeamCountsAreMalformedLines) {
+  const TestTempDirectory dir;
+  // Line 1: n + 11 wraps around to 5, the field count, with unchecked sums.
+  const fs::path path =
+      dir.Write("huge.log", "FLASER 18446744073709551610 1 2 3\n" +
+                                std::string("FLASER 18446744073709551615 1 2 3 4 5 6 7 8 9\n") +
+                                "ROBOTLASER1 0 0 3 0.5 30 0 0 18446744073709551615 1 2\n" +
+                                "ROBOTLASER1 0 0 3 0.5 30 0 0 1 1 18446744073709551600 9\n" +
+                                Flaser(2, 1.0, 0, 0, 0, 1.0));
+  CarmenLogCounts counts;
+  const Dataset dataset = ReadCarmenLog(path, &counts);
+  EXPECT_EQ(counts.malformed_lines, 4u);
+  EXPECT_EQ(dataset.scans.size(), 1u);
+  EXPECT_TRUE(AnyWarningContains(dataset, path.string() + ":4: malformed ROBOTLASER1"));
+}
+
 TEST(CarmenLogReader, ZeroBeamScansAreSkippedWithAWarning) {
   const TestTempDirectory dir;
   const fs::path path =

@@ -29,7 +29,13 @@ Dataset LoadDataset(const std::filesystem::path& path, const DatasetOptions& opt
     throw InputError(path.string() + ": ROS bag of format '" + head.substr(1, 11) +
                      "'; expected format V2.0 (rosbag reindex/fix can convert older bags)");
   }
-  return ReadCarmenLog(path);
+  Dataset dataset = ReadCarmenLog(path);
+  if (!options.scan_topic.empty() || !options.odometry_topic.empty()) {
+    dataset.warnings.push_back(path.string() +
+                               ": scan and odometry topics are options for ROS bags; ignored for "
+                               "this CARMEN log");
+  }
+  return dataset;
 }
 
 }  // namespace scout::io

@@ -46,9 +46,13 @@ TEST(Dataset, DetectsCarmenLogsByContentAndRejectsOtherFiles) {
   ASSERT_NE(gz, nullptr);
   gzputs(gz, log.c_str());
   gzclose(gz);
-  const Dataset from_gzip = LoadDataset(dir.path() / "log.dat");
+  DatasetOptions bag_options;
+  bag_options.scan_topic = "/scan";
+  const Dataset from_gzip = LoadDataset(dir.path() / "log.dat", bag_options);
   EXPECT_EQ(from_gzip.format, "carmen");
   EXPECT_EQ(from_gzip.scans.size(), 1u);
+  ASSERT_EQ(from_gzip.warnings.size(), 1u);
+  EXPECT_NE(from_gzip.warnings[0].find("options for ROS bags; ignored"), std::string::npos);
 
   const fs::path old_bag = dir.Write("old.bag", "#ROSBAG V1.2\n...");
   EXPECT_NE(ThrownMessage(old_bag).find(old_bag.string() + ": ROS bag of format 'ROSBAG V1.2'"),
