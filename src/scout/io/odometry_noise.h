@@ -37,9 +37,15 @@ struct OdometryNoiseModel {
 // Returns 'odometry' re-integrated from its consecutive increments with the
 // noise of 'model', every standard deviation multiplied by 'scale'. The first
 // pose and all times are kept; scale 0 returns the input unchanged. The same
-// inputs and 'seed' give the same output on every platform (own Gaussian
-// transform on std::mt19937_64). Throws std::invalid_argument if 'scale' or
-// a model coefficient is negative or not finite.
+// inputs and 'seed' give the same output with any standard library: draws come
+// from std::mt19937_64 (fully specified) through an own Box-Muller transform,
+// not the implementation-defined std::normal_distribution. Throws
+// std::invalid_argument if 'scale' or a model coefficient is negative or not
+// finite.
+//
+// Compared with sim::OdometryModel (per-sample standard deviations, tuned for
+// 50 Hz simulation): recorded odometry comes at 5 to 50 Hz, so here the drift
+// must not depend on the sample rate.
 std::vector<sensor::Odometry> AddOdometryNoise(const std::vector<sensor::Odometry>& odometry,
                                                double scale, uint64_t seed,
                                                const OdometryNoiseModel& model = {});
