@@ -104,7 +104,9 @@ TEST_F(ScoutCli, FrontierBenchWritesConsistentOutputs) {
   std::vector<std::string> names;
   for (const auto& e : fs::directory_iterator(out)) names.push_back(e.path().filename());
   std::sort(names.begin(), names.end());
-  EXPECT_EQ(names, (std::vector<std::string>{"frontier.csv", "frontiers.png", "summary.json"}));
+  EXPECT_EQ(names, (std::vector<std::string>{"figures", "frontier.csv", "frontiers.png",
+                                             "report.html", "summary.json"}));
+  EXPECT_TRUE(fs::exists(out / "figures" / "queried_points.svg"));
   std::ifstream in(out / "summary.json");
   const nlohmann::json summary = nlohmann::json::parse(in);
   EXPECT_GT(summary["submaps"].get<int>(), 1);
@@ -125,10 +127,41 @@ TEST_F(ScoutCli, FrontierBenchWritesConsistentOutputs) {
   std::ifstream csv(out / "frontier.csv");
   std::string header;
   std::getline(csv, header);
-  EXPECT_EQ(header, "round,strategy,queried_points,queried_submaps,time_us,tp,fp,tn,fn");
+  EXPECT_EQ(header,
+            "round,strategy,queried_points,queried_submaps,time_us,tp,fp,tn,fn,local_points");
   int rows = 0;
   for (std::string line; std::getline(csv, line);) ++rows;
   EXPECT_EQ(rows, 5 * summary["optimizations"].get<int>());
+}
+
+TEST_F(ScoutCli, ReportAndCompareRedrawFromTheOutputFiles) {
+  const fs::path a = dir_ / "a", b = dir_ / "b";
+  ASSERT_EQ(RunScout("frontier-bench --quiet --world " + (dir_ / "rooms.yaml").string() +
+                     " --seed 3 --out " + a.string())
+                .exit_code,
+            0);
+  fs::create_directories(b);
+  fs::copy_file(a / "frontier.csv", b / "frontier.csv");
+  fs::copy_file(a / "summary.json", b / "summary.json");
+  Result r = RunScout("report " + b.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::ifstream page(b / "report.html");
+  const std::string html{std::istreambuf_iterator<char>(page), std::istreambuf_iterator<char>()};
+  EXPECT_NE(html.find("Frontier update strategies"), std::string::npos);
+  EXPECT_TRUE(fs::exists(b / "figures" / "accuracy.svg"));
+  r = RunScout("compare " + a.string() + " " + b.string() + " --out " + (dir_ / "cmp").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(fs::exists(dir_ / "cmp" / "compare.html"));
+  EXPECT_TRUE(fs::exists(dir_ / "cmp" / "figures" / "compare_p.svg"));
+  // Bad input: exit code 2, the message names the file and line; nothing written.
+  std::ofstream(b / "frontier.csv", std::ios::app) << "7,dfd,x\n";
+  r = RunScout("report " + b.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("frontier.csv:"), std::string::npos) << r.output;
+  r = RunScout("compare " + (dir_ / "missing").string() + " --out " + (dir_ / "cmp2").string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("missing"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(dir_ / "cmp2"));
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "apps/scout/report_command.h"
 #include "scout/common/atomic_file.h"
 #include "scout/common/error.h"
 #include "scout/frontier/frontier_engine.h"
@@ -101,7 +102,10 @@ int RunFrontierBench(const FrontierBenchArgs& args) {
 
   io::WriteFrontierCsv(engine, out.Stage("frontier.csv"));
   io::WriteFrontierPicture(engine, args.picture_strategy, out.Stage("frontiers.png"));
-  WriteTextFileAtomically(out.Stage("summary.json"), summary.dump(2) + "\n");
+  const std::filesystem::path summary_path = out.Stage("summary.json");
+  WriteTextFileAtomically(summary_path, summary.dump(2) + "\n");
+  // The report reads the staged outputs and is committed together with them.
+  StageRunReport(summary_path.parent_path(), out);
   out.Commit();
 
   std::cout << "frontier-bench: world " << args.world << ", seed " << args.seed << ": "
@@ -119,7 +123,7 @@ int RunFrontierBench(const FrontierBenchArgs& args) {
               << std::setprecision(1) << std::setw(11) << t.time_ms << "\n";
   }
   std::cout << "outputs: " << (out.path() / "summary.json").string() << ", frontier.csv, "
-            << "frontiers.png\n";
+            << "frontiers.png, report.html, figures/\n";
   return 0;
 }
 

@@ -23,8 +23,8 @@ struct FrontierBenchArgs {
 CLI::App* AddFrontierBenchCommand(CLI::App& app, FrontierBenchArgs* args);
 
 // Runs the lockstep frontier evaluation on a synthetic SLAM event stream and
-// writes summary.json, frontier.csv and frontiers.png into the output
-// directory. Returns the process exit code; throws InputError on bad input.
+// writes summary.json, frontier.csv, frontiers.png, report.html and
+// figures/*.svg into the output directory. Returns the process exit code; throws InputError on bad input.
 int RunFrontierBench(const FrontierBenchArgs& args);
 
 }  // namespace scout::apps

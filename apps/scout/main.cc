@@ -6,7 +6,9 @@
 #include <exception>
 #include <iostream>
 
+#include "apps/scout/compare_command.h"
 #include "apps/scout/frontier_bench_command.h"
+#include "apps/scout/report_command.h"
 #include "scout/common/error.h"
 
 int main(int argc, char** argv) {
@@ -15,6 +17,10 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "scout 0.1.0");
   scout::apps::FrontierBenchArgs bench_args;
   CLI::App* bench = scout::apps::AddFrontierBenchCommand(app, &bench_args);
+  scout::apps::ReportArgs report_args;
+  CLI::App* report = scout::apps::AddReportCommand(app, &report_args);
+  scout::apps::CompareArgs compare_args;
+  CLI::App* compare = scout::apps::AddCompareCommand(app, &compare_args);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -29,6 +35,8 @@ int main(int argc, char** argv) {
   }
   try {
     if (bench->parsed()) return scout::apps::RunFrontierBench(bench_args);
+    if (report->parsed()) return scout::apps::RunReport(report_args);
+    if (compare->parsed()) return scout::apps::RunCompare(compare_args);
   } catch (const scout::InputError& e) {
     std::cerr << "scout: error: " << e.what() << "\n";
     return 2;

@@ -75,6 +75,7 @@ void FrontierEngine::Apply(const events::SubmapEvent& event) {
   for (size_t s = 0; s < strategies_.size(); ++s) {
     round[s].round = optimizations_;
     round[s].strategy = names_[s];
+    round[s].local_points = catalog_.total_points();
     round[s].cost = strategies_[s]->OnOptimized(previous);
     last_round_submaps_[s] = round[s].cost.submap_ids;
   }

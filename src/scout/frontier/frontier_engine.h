@@ -33,6 +33,9 @@ struct StrategyRound {
   std::string strategy;
   UpdateCost cost;
   Confusion confusion;  // against "full" after the round (zero without evaluation)
+  // Local frontier points of all submaps when the round ran (shared by all
+  // strategies: extraction is done once per grid change).
+  int64_t local_points = 0;
 };
 
 // A strategy's totals over all optimisation rounds (ALGORITHMS §5).

@@ -12,12 +12,12 @@ namespace scout::io {
 
 void WriteFrontierCsv(const frontier::FrontierEngine& engine, const std::filesystem::path& path) {
   std::ostringstream csv;
-  csv << "round,strategy,queried_points,queried_submaps,time_us,tp,fp,tn,fn\n";
+  csv << "round,strategy,queried_points,queried_submaps,time_us,tp,fp,tn,fn,local_points\n";
   for (const frontier::StrategyRound& r : engine.rounds()) {
     csv << r.round << ',' << r.strategy << ',' << r.cost.queried_points << ','
         << r.cost.queried_submaps << ',' << static_cast<int64_t>(std::llround(r.cost.time_us))
         << ',' << r.confusion.tp << ',' << r.confusion.fp << ',' << r.confusion.tn << ','
-        << r.confusion.fn << '\n';
+        << r.confusion.fn << ',' << r.local_points << '\n';
   }
   WriteTextFileAtomically(path, csv.str());
 }

@@ -10,7 +10,8 @@
 namespace scout::io {
 
 // Writes one row per optimisation round and strategy:
-// round,strategy,queried_points,queried_submaps,time_us,tp,fp,tn,fn
+// round,strategy,queried_points,queried_submaps,time_us,tp,fp,tn,fn,local_points
+// (local_points: local frontier points of all submaps at that round)
 // (atomically: temporary file, then rename).
 void WriteFrontierCsv(const frontier::FrontierEngine& engine, const std::filesystem::path& path);
 

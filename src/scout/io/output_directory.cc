@@ -57,12 +57,16 @@ OutputDirectory::~OutputDirectory() {
 
 std::filesystem::path OutputDirectory::Stage(const std::string& name) {
   names_.push_back(name);
+  // Names may hold subdirectories ("figures/a.svg"); the writer expects them.
+  std::error_code ec;
+  std::filesystem::create_directories((staging_ / name).parent_path(), ec);
   return staging_ / name;
 }
 
 void OutputDirectory::Commit() {
   for (const std::string& name : names_) {
     std::error_code ec;
+    std::filesystem::create_directories((dir_ / name).parent_path(), ec);
     std::filesystem::rename(staging_ / name, dir_ / name, ec);
     if (ec) {
       throw InputError("cannot move '" + name + "' into '" + dir_.string() + "': " + ec.message());

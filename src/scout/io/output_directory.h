@@ -22,6 +22,7 @@ class OutputDirectory {
   OutputDirectory& operator=(const OutputDirectory&) = delete;
 
   // Returns where to write output 'name' now; registers it for Commit().
+  // 'name' may name a subdirectory ("figures/a.svg"), created as needed.
   std::filesystem::path Stage(const std::string& name);
   // Moves every staged file into the directory. Throws InputError on failure.
   void Commit();

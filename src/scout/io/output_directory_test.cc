@@ -45,6 +45,20 @@ TEST(OutputDirectory, CommitMovesEveryStagedFileIntoPlace) {
   fs::remove_all(dir);
 }
 
+TEST(OutputDirectory, StagedNamesMayHoldSubdirectories) {
+  const fs::path dir = FreshDir();
+  for (const std::string content : {"first", "second"}) {
+    OutputDirectory out(dir);
+    WriteTextFileAtomically(out.Stage("figures/a.svg"), content);
+    out.Commit();
+  }
+  std::ifstream in(dir / "figures" / "a.svg");
+  std::string text;
+  std::getline(in, text);
+  EXPECT_EQ(text, "second");  // a second run replaces the file in the existing subdirectory
+  fs::remove_all(dir);
+}
+
 TEST(OutputDirectory, WithoutCommitNothingIsLeftBehind) {
   const fs::path dir = FreshDir();
   fs::create_directories(dir);

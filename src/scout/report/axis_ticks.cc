@@ -104,4 +104,26 @@ std::string FormatTick(double value, double step) {
   return text;
 }
 
+std::vector<std::string> TickLabels(const AxisTicks& axis) {
+  std::vector<std::string> labels;
+  double largest = 0.0;
+  for (const double t : axis.ticks) largest = std::max(largest, std::abs(t));
+  double scale = 1.0;
+  const char* suffix = "";
+  if (axis.step > 0.0 && largest >= 1e4) {
+    scale = largest >= 1e9 ? 1e9 : largest >= 1e6 ? 1e6 : 1e3;
+    suffix = largest >= 1e9 ? "G" : largest >= 1e6 ? "M" : "k";
+  }
+  for (const double t : axis.ticks) {
+    if (axis.step == 0.0) {
+      labels.push_back(FormatTick(t, 0.0));
+    } else if (t == 0.0) {
+      labels.push_back("0");
+    } else {
+      labels.push_back(FormatTick(t / scale, axis.step / scale) + suffix);
+    }
+  }
+  return labels;
+}
+
 }  // namespace scout::report

@@ -27,6 +27,10 @@ AxisTicks LogTicks(double lo, double hi);
 // abbreviating large magnitudes (12000 -> "12k", 3500000 -> "3.5M").
 std::string FormatTick(double value, double step);
 
+// Returns the labels of 'axis'. On a linear axis reaching 10000 all labels
+// share one abbreviation (0, 4k, 8k, 12k rather than 0, 4000, 8000, 12k).
+std::vector<std::string> TickLabels(const AxisTicks& axis);
+
 }  // namespace scout::report
 
 #endif  // SCOUT_REPORT_AXIS_TICKS_H_

@@ -74,5 +74,16 @@ TEST(FormatTick, DecimalsFollowTheStepAndLargeValuesAreAbbreviated) {
   EXPECT_EQ(FormatTick(-0.0, 1), "0");
 }
 
+TEST(TickLabels, OneAbbreviationPerAxis) {
+  EXPECT_EQ(TickLabels(NiceTicks(0, 12000, 3)),
+            (std::vector<std::string>{"0", "5k", "10k", "15k"}));
+  EXPECT_EQ(TickLabels(NiceTicks(0, 8000, 4)),
+            (std::vector<std::string>{"0", "2000", "4000", "6000", "8000"}));
+  EXPECT_EQ(TickLabels(NiceTicks(0, 2.5e6, 5)),
+            (std::vector<std::string>{"0", "0.5M", "1.0M", "1.5M", "2.0M", "2.5M"}));
+  EXPECT_EQ(TickLabels(LogTicks(1, 1e5)),
+            (std::vector<std::string>{"1", "10", "100", "1000", "10k", "100k"}));
+}
+
 }  // namespace
 }  // namespace scout::report

@@ -81,7 +81,7 @@ std::vector<Figure> ComparisonFigures(const std::vector<RunData>& runs) {
   if (!strategies.empty()) {
     bars("compare_p", "Performance P per strategy", "P (% fewer points than dfd)", false, "%.1f",
          [](const StrategyStats& s) { return 100.0 * s.performance_p; });
-    bars("compare_accuracy", "Accuracy against full per strategy", "accuracy (%)", true, "%.2f",
+    bars("compare_accuracy", "Accuracy against full per strategy", "accuracy (%)", true, "auto",
          [](const StrategyStats& s) { return 100.0 * s.accuracy; });
     bars("compare_time", "Update time per optimisation round", "time per round (ms)", false, "%.2f",
          [](const StrategyStats& s) { return s.time_per_round_ms; });

@@ -79,12 +79,7 @@ RunData ReadRun(const std::filesystem::path& dir, const std::string& name) {
   RunData run;
   run.dir = dir;
   run.name = name;
-  if (run.name.empty()) {
-    // "out/office/" has an empty filename; its parent's name is the run.
-    std::filesystem::path p = dir;
-    if (p.filename().empty()) p = p.parent_path();
-    run.name = std::filesystem::absolute(p).lexically_normal().filename().string();
-  }
+  if (run.name.empty()) run.name = RunName(dir);
   const bool has_summary = std::filesystem::exists(dir / "summary.json");
   const bool has_frontier = std::filesystem::exists(dir / "frontier.csv");
   const bool has_coverage = std::filesystem::exists(dir / "coverage.csv");
@@ -108,6 +103,13 @@ RunData ReadRun(const std::filesystem::path& dir, const std::string& name) {
   std::sort(run.pictures.begin(), run.pictures.end(),
             [&](const auto& a, const auto& b) { return rank(a) < rank(b); });
   return run;
+}
+
+std::string RunName(const std::filesystem::path& dir) {
+  // "out/office/" has an empty filename; normalising drops it (and "/.").
+  std::filesystem::path p = std::filesystem::absolute(dir).lexically_normal();
+  if (p.filename().empty()) p = p.parent_path();
+  return p.filename().string();
 }
 
 std::vector<std::string> StrategiesOf(const std::vector<FrontierRound>& rounds) {

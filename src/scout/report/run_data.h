@@ -54,6 +54,10 @@ std::vector<CoverageSample> ReadCoverageCsv(const std::filesystem::path& path);
 // frontier.csv and coverage.csv, or one of them is malformed.
 RunData ReadRun(const std::filesystem::path& dir, const std::string& name = "");
 
+// Returns the name of the run in 'dir': its last path component ("out/a/" and
+// "out/a/." give "a").
+std::string RunName(const std::filesystem::path& dir);
+
 // Returns the strategies of 'rounds' in order of first appearance.
 std::vector<std::string> StrategiesOf(const std::vector<FrontierRound>& rounds);
 

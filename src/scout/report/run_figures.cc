@@ -64,9 +64,9 @@ void AddFrontierFigures(const RunData& run, std::vector<Figure>* figures) {
 
   BarChart bars;
   bars.title = WithRun("Accuracy, precision and recall against full", run);
-  bars.y_label = "%";
+  bars.y_label = "percent (%)";
   bars.zoom = true;
-  bars.value_format = "%.2f";
+  bars.value_format = "auto";
   bars.series = {{"accuracy", {}}, {"precision", {}}, {"recall", {}}};
   for (const StrategyStats& s : StrategyStatsOf(run)) {
     // "full" is the reference: its bars are 100 % by definition.

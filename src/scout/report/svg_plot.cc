@@ -138,12 +138,13 @@ void Header(std::ostringstream& svg, int width, int height, const std::string& t
 // Horizontal grid lines, y tick labels and the rotated y axis label.
 void DrawYAxis(std::ostringstream& svg, const Frame& f, const std::string& label) {
   svg << "<g class=\"y-axis\">";
-  for (const double t : f.y_axis.ticks) {
-    const double y = f.Y(t);
+  const std::vector<std::string> labels = TickLabels(f.y_axis);
+  for (size_t i = 0; i < labels.size(); ++i) {
+    const double y = f.Y(f.y_axis.ticks[i]);
     svg << "<line x1=\"" << Num(f.left) << "\" y1=\"" << Num(y) << "\" x2=\"" << Num(f.right)
         << "\" y2=\"" << Num(y) << "\" stroke=\"#dddddd\"/>"
         << "<text class=\"ytick\" x=\"" << Num(f.left - 6) << "\" y=\"" << Num(y + 4)
-        << "\" text-anchor=\"end\">" << FormatTick(t, f.y_axis.step) << "</text>";
+        << "\" text-anchor=\"end\">" << labels[i] << "</text>";
   }
   const double mid = (f.top + f.bottom) / 2;
   svg << "<text class=\"axis-label\" x=\"18\" y=\"" << Num(mid) << "\" transform=\"rotate(-90 18 "
@@ -236,12 +237,13 @@ std::string RenderLineChart(const LineChart& chart) {
   DrawLegend(svg, legend, f.left, 34.0, f.right - f.left);
   DrawYAxis(svg, f, chart.y_label);
   svg << "<g class=\"x-axis\">";
-  for (const double t : f.x_axis.ticks) {
-    const double x = f.X(t);
+  const std::vector<std::string> x_labels = TickLabels(f.x_axis);
+  for (size_t i = 0; i < x_labels.size(); ++i) {
+    const double x = f.X(f.x_axis.ticks[i]);
     svg << "<line x1=\"" << Num(x) << "\" y1=\"" << Num(f.top) << "\" x2=\"" << Num(x) << "\" y2=\""
         << Num(f.bottom) << "\" stroke=\"#eeeeee\"/>"
         << "<text class=\"xtick\" x=\"" << Num(x) << "\" y=\"" << Num(f.bottom + 18)
-        << "\" text-anchor=\"middle\">" << FormatTick(t, f.x_axis.step) << "</text>";
+        << "\" text-anchor=\"middle\">" << x_labels[i] << "</text>";
   }
   svg << "<text class=\"axis-label\" x=\"" << Num((f.left + f.right) / 2) << "\" y=\""
       << chart.height_px - 14 << "\" text-anchor=\"middle\" font-size=\"13\">"
@@ -344,7 +346,15 @@ std::string RenderBarChart(const BarChart& chart) {
           << EscapeXml(chart.categories[c]) << ": " << v << "</title></rect>";
       if (chart.value_format.empty()) continue;
       char text[48];
-      std::snprintf(text, sizeof(text), chart.value_format.c_str(), v);
+      if (chart.value_format == "auto") {
+        // One decimal more than the axis labels, so neighbouring bars differ.
+        const double step = f.y_axis.step;
+        const int decimals =
+            1 + (step < 1.0 ? static_cast<int>(std::ceil(-std::log10(step) - 1e-9)) : 0);
+        std::snprintf(text, sizeof(text), "%.*f", std::min(decimals, 6), v);
+      } else {
+        std::snprintf(text, sizeof(text), chart.value_format.c_str(), v);
+      }
       const double cx = x + bar / 2;
       const double text_px = kCharWidthPx * 0.85 * std::string(text).size();
       // Labels wider than their bar are turned upright so neighbours never overlap.

@@ -42,8 +42,9 @@ struct BarChart {
   // with 'zoom', the axis starts at a nice value below the smallest bar and
   // the chart says so under its title.
   bool zoom = false;
-  // printf format of the value written above each bar ("" writes none).
-  std::string value_format = "%.2f";
+  // printf format of the value written on each bar ("" writes none; "auto"
+  // uses one decimal more than the axis labels).
+  std::string value_format = "auto";
   int width_px = 760;
   int height_px = 440;
 };

@@ -107,6 +107,7 @@ TEST(SvgPlot, GroupedBarsOnePerValueWithZoomNote) {
                   {"precision", {100, 99.8, std::numeric_limits<double>::quiet_NaN()}},
                   {"recall", {100, 99.9, 99.97}}};
   chart.zoom = true;
+  chart.value_format = "%.2f";
   const std::string svg = RenderBarChart(chart);
   const testing::XmlCheck xml = CheckXml(svg);
   ASSERT_EQ(xml.error, "") << svg;
@@ -120,6 +121,9 @@ TEST(SvgPlot, GroupedBarsOnePerValueWithZoomNote) {
   const std::string unzoomed = RenderBarChart(chart);
   EXPECT_EQ(unzoomed.find("y axis starts at"), std::string::npos);
   EXPECT_NE(unzoomed.find(">0<"), std::string::npos);
+  // "auto" labels carry one decimal more than the axis: 0..100 in steps of 20.
+  chart.value_format = "auto";
+  EXPECT_NE(RenderBarChart(chart).find(">99.9<"), std::string::npos);
 }
 
 TEST(SvgPlot, NegativeBarsHangFromZero) {

@@ -13,10 +13,22 @@
 
 namespace scout::report::testing {
 
+inline std::filesystem::path TestRoot() {
+  return std::filesystem::temp_directory_path() /
+         ("scout_report_test_" + std::to_string(::getpid()));
+}
+
+// Removes this process's test directories when the test program exits.
+inline const struct RemoveTestRoot {
+  ~RemoveTestRoot() {
+    std::error_code ignored;
+    std::filesystem::remove_all(TestRoot(), ignored);
+  }
+} kRemoveTestRoot;
+
 // A fresh empty directory under the system temp directory.
 inline std::filesystem::path FreshDir(const std::string& name) {
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() /
-                                    ("scout_report_test_" + std::to_string(::getpid())) / name;
+  const std::filesystem::path dir = TestRoot() / name;
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;

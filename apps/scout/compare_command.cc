@@ -1,0 +1,35 @@
+#include "apps/scout/compare_command.h"
+
+#include <iostream>
+
+#include "scout/common/atomic_file.h"
+#include "scout/io/output_directory.h"
+#include "scout/report/compare.h"
+
+namespace scout::apps {
+
+CLI::App* AddCompareCommand(CLI::App& app, CompareArgs* args) {
+  CLI::App* cmd = app.add_subcommand(
+      "compare", "Compare several output directories in one table and overlaid figures");
+  cmd->add_option("dirs", args->dirs, "output directories of frontier-bench, replay or explore")
+      ->required();
+  cmd->add_option("--out", args->out_dir, "where to write compare.html and figures/")
+      ->capture_default_str();
+  return cmd;
+}
+
+int RunCompare(const CompareArgs& args) {
+  const std::vector<std::filesystem::path> dirs(args.dirs.begin(), args.dirs.end());
+  // Read every run before creating the output directory.
+  const std::vector<report::ReportFile> files = report::BuildComparison(dirs);
+  io::OutputDirectory out(args.out_dir);
+  for (const report::ReportFile& file : files) {
+    WriteTextFileAtomically(out.Stage(file.name), file.content);
+  }
+  out.Commit();
+  std::cout << "compare: " << dirs.size() << " runs, " << (out.path() / "compare.html").string()
+            << " and " << files.size() - 1 << " figures\n";
+  return 0;
+}
+
+}  // namespace scout::apps
