@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "apps/scout/command_util.h"
 #include "apps/scout/report_command.h"
 #include "scout/common/atomic_file.h"
 #include "scout/common/error.h"
@@ -19,20 +20,6 @@
 #include "scout/synthetic/synthetic_stream.h"
 
 namespace scout::apps {
-namespace {
-
-std::vector<std::string> SplitList(const std::string& list) {
-  std::vector<std::string> items;
-  std::stringstream ss(list);
-  std::string item;
-  while (std::getline(ss, item, ',')) {
-    if (!item.empty()) items.push_back(item);
-  }
-  return items;
-}
-
-}  // namespace
-
 CLI::App* AddFrontierBenchCommand(CLI::App& app, FrontierBenchArgs* args) {
   CLI::App* cmd = app.add_subcommand(
       "frontier-bench",
@@ -111,17 +98,7 @@ int RunFrontierBench(const FrontierBenchArgs& args) {
   std::cout << "frontier-bench: world " << args.world << ", seed " << args.seed << ": "
             << engine.catalog().size() << " submaps, " << engine.optimizations()
             << " optimisations, " << engine.catalog().total_points() << " local frontier points\n";
-  std::cout << std::left << std::setw(8) << "strategy" << std::right << std::setw(14)
-            << "queried_pts" << std::setw(10) << "P" << std::setw(10) << "accuracy" << std::setw(11)
-            << "precision" << std::setw(9) << "recall" << std::setw(11) << "time_ms"
-            << "\n";
-  for (const frontier::StrategyTotals& t : engine.Totals()) {
-    std::cout << std::left << std::setw(8) << t.strategy << std::right << std::setw(14)
-              << t.queried_points << std::fixed << std::setprecision(4) << std::setw(10)
-              << t.performance_p << std::setw(10) << t.confusion.accuracy() << std::setw(11)
-              << t.confusion.precision() << std::setw(9) << t.confusion.recall()
-              << std::setprecision(1) << std::setw(11) << t.time_ms << "\n";
-  }
+  PrintStrategyTable(engine, std::cout);
   std::cout << "outputs: " << (out.path() / "summary.json").string() << ", frontier.csv, "
             << "frontiers.png, report.html, figures/\n";
   return 0;

@@ -8,6 +8,7 @@
 
 #include "apps/scout/compare_command.h"
 #include "apps/scout/frontier_bench_command.h"
+#include "apps/scout/replay_command.h"
 #include "apps/scout/report_command.h"
 #include "scout/common/error.h"
 
@@ -21,6 +22,8 @@ int main(int argc, char** argv) {
   CLI::App* report = scout::apps::AddReportCommand(app, &report_args);
   scout::apps::CompareArgs compare_args;
   CLI::App* compare = scout::apps::AddCompareCommand(app, &compare_args);
+  scout::apps::ReplayArgs replay_args;
+  CLI::App* replay = scout::apps::AddReplayCommand(app, &replay_args);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -37,6 +40,7 @@ int main(int argc, char** argv) {
     if (bench->parsed()) return scout::apps::RunFrontierBench(bench_args);
     if (report->parsed()) return scout::apps::RunReport(report_args);
     if (compare->parsed()) return scout::apps::RunCompare(compare_args);
+    if (replay->parsed()) return scout::apps::RunReplay(replay_args);
   } catch (const scout::InputError& e) {
     std::cerr << "scout: error: " << e.what() << "\n";
     return 2;

@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "scout/common/error.h"
+#include "scout/io/slam_config.h"
 #include "scout/io/yaml_fields.h"
 
 namespace scout::io {
@@ -103,8 +104,14 @@ ScoutConfig LoadConfig(const std::filesystem::path& path) {
   YamlSection top(root, path.string(), "");
   ReadFrontier(top.Section("frontier"), &config.frontier);
   ReadSynthetic(top.Section("synthetic"), &config.synthetic);
+  ReadSlamOptions(top.Section("slam"), &config.slam);
   top.RejectUnknownKeys();
   frontier::Validate(config.frontier);
+  try {
+    slam::Validate(config.slam);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(path.string() + ": " + e.what());
+  }
   return config;
 }
 

@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "scout/frontier/frontier_options.h"
+#include "scout/slam/map_builder.h"
 #include "scout/synthetic/synthetic_stream.h"
 
 namespace scout::io {
@@ -13,6 +14,7 @@ namespace scout::io {
 struct ScoutConfig {
   frontier::FrontierOptions frontier;
   synthetic::SyntheticStreamOptions synthetic;
+  slam::SlamOptions slam;
 };
 
 // Reads a YAML options file; absent keys keep their defaults. Throws

@@ -1,0 +1,32 @@
+#include "apps/scout/command_util.h"
+
+#include <iomanip>
+#include <sstream>
+
+namespace scout::apps {
+
+std::vector<std::string> SplitList(const std::string& list) {
+  std::vector<std::string> items;
+  std::stringstream ss(list);
+  std::string item;
+  while (std::getline(ss, item, ',')) {
+    if (!item.empty()) items.push_back(item);
+  }
+  return items;
+}
+
+void PrintStrategyTable(const frontier::FrontierEngine& engine, std::ostream& out) {
+  out << std::left << std::setw(8) << "strategy" << std::right << std::setw(14) << "queried_pts"
+      << std::setw(10) << "P" << std::setw(10) << "accuracy" << std::setw(11) << "precision"
+      << std::setw(9) << "recall" << std::setw(11) << "time_ms"
+      << "\n";
+  for (const frontier::StrategyTotals& t : engine.Totals()) {
+    out << std::left << std::setw(8) << t.strategy << std::right << std::setw(14)
+        << t.queried_points << std::fixed << std::setprecision(4) << std::setw(10)
+        << t.performance_p << std::setw(10) << t.confusion.accuracy() << std::setw(11)
+        << t.confusion.precision() << std::setw(9) << t.confusion.recall() << std::setprecision(1)
+        << std::setw(11) << t.time_ms << "\n";
+  }
+}
+
+}  // namespace scout::apps

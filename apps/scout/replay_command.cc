@@ -1,0 +1,228 @@
+#include "apps/scout/replay_command.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <iomanip>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "apps/scout/command_util.h"
+#include "scout/common/atomic_file.h"
+#include "scout/common/error.h"
+#include "scout/common/resource_usage.h"
+#include "scout/frontier/frontier_engine.h"
+#include "scout/frontier/stopwatch.h"
+#include "scout/io/config.h"
+#include "scout/io/dataset.h"
+#include "scout/io/frontier_report.h"
+#include "scout/io/map_picture.h"
+#include "scout/io/odometry_noise.h"
+#include "scout/io/output_directory.h"
+#include "scout/io/replay_reference.h"
+#include "scout/io/trajectory_metrics.h"
+#include "scout/io/tum_trajectory.h"
+#include "scout/slam/map_builder.h"
+
+namespace scout::apps {
+namespace {
+
+constexpr int kMaxWarningsPrinted = 10;
+
+void PrintWarnings(const io::Dataset& dataset) {
+  const int n = static_cast<int>(dataset.warnings.size());
+  for (int i = 0; i < std::min(n, kMaxWarningsPrinted); ++i) {
+    std::cerr << "scout: warning: " << dataset.warnings[i] << "\n";
+  }
+  if (n > kMaxWarningsPrinted) {
+    std::cerr << "scout: warning: ... and " << n - kMaxWarningsPrinted << " more warnings\n";
+  }
+}
+
+// Pairs every SLAM node with the reference pose of its scan.
+std::vector<io::PosePair> PairNodesWithReference(const io::Dataset& dataset,
+                                                 const io::ScanReference& reference,
+                                                 const std::vector<slam::TimedPose>& nodes) {
+  std::vector<io::PosePair> pairs;
+  size_t scan = 0;
+  for (const slam::TimedPose& node : nodes) {
+    // Nodes are in scan order and carry their scan's own timestamp.
+    while (scan < dataset.scans.size() && dataset.scans[scan].time_s < node.time_s) ++scan;
+    if (scan == dataset.scans.size()) break;
+    if (dataset.scans[scan].time_s == node.time_s && reference.poses[scan]) {
+      pairs.push_back({node.time_s, node.pose, *reference.poses[scan]});
+    }
+  }
+  return pairs;
+}
+
+nlohmann::json ReferenceSummary(const io::TrajectoryErrors& e, const io::ScanReference& r) {
+  return {{"association", r.association},
+          {"reference_scans", r.matched},
+          {"matched_scans", e.matched},
+          {"ate_rmse_m", e.ate_rmse_m},
+          {"ate_max_m", e.ate_max_m},
+          {"rpe_1s_trans_m", e.rpe_1s_trans_m},
+          {"rpe_1s_rot_deg", e.rpe_1s_rot_deg},
+          {"rpe_10s_trans_m", e.rpe_10s_trans_m},
+          {"rpe_10s_rot_deg", e.rpe_10s_rot_deg}};
+}
+
+}  // namespace
+
+CLI::App* AddReplayCommand(CLI::App& app, ReplayArgs* args) {
+  CLI::App* cmd = app.add_subcommand(
+      "replay",
+      "Run SLAM on a recorded dataset (CARMEN log or ROS 1 bag, plain or .gz) and every frontier "
+      "update strategy in lockstep on its events");
+  cmd->add_option("dataset", args->dataset, "the dataset file")->required();
+  cmd->add_option("--out", args->out_dir, "output directory")->capture_default_str();
+  cmd->add_option("--config", args->config_file, "YAML options file (see config/default.yaml)");
+  cmd->add_option("--reference", args->reference,
+                  "reference trajectory: a TUM file, or a CARMEN log whose scan poses are the "
+                  "reference (paired by identical range readings)");
+  cmd->add_option("--strategies", args->strategies, "comma-separated strategies to run")
+      ->capture_default_str();
+  cmd->add_option("--picture-strategy", args->picture_strategy,
+                  "strategy whose frontier frontiers.png shows")
+      ->capture_default_str();
+  cmd->add_option("--scan-topic", args->scan_topic, "bags: LaserScan topic (default: detected)");
+  cmd->add_option("--odom-topic", args->odometry_topic, "bags: Odometry topic (default: detected)");
+  cmd->add_option("--odom-noise", args->odom_noise,
+                  "scale of the wheel-odometry drift injected into the dataset's odometry (0 = "
+                  "none, 1 = typical)")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--seed", args->seed, "seed of the injected odometry noise")
+      ->capture_default_str();
+  cmd->add_option("--max-scans", args->max_scans, "stop after this many scans (0 = all)")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_flag("--synchronous", args->synchronous,
+                "run global SLAM in the calling thread (deterministic; overrides the config)");
+  cmd->add_flag("--quiet", args->quiet, "print only the final summary");
+  return cmd;
+}
+
+int RunReplay(const ReplayArgs& args) {
+  const frontier::Stopwatch wall;
+  io::ScoutConfig config =
+      args.config_file.empty() ? io::ScoutConfig{} : io::LoadConfig(args.config_file);
+  if (args.synchronous) config.slam.pose_graph.synchronous = true;
+  // Validates options and names before any long work or any output.
+  frontier::FrontierEngine engine(config.frontier, SplitList(args.strategies), /*evaluate=*/true);
+  engine.strategy(args.picture_strategy);
+
+  io::Dataset dataset = io::LoadDataset(args.dataset, {args.scan_topic, args.odometry_topic});
+  PrintWarnings(dataset);
+  if (args.max_scans > 0 && dataset.scans.size() > static_cast<size_t>(args.max_scans)) {
+    dataset.scans.resize(args.max_scans);
+    if (!dataset.scan_poses.empty()) dataset.scan_poses.resize(args.max_scans);
+  }
+  if (dataset.odometry.empty()) {
+    std::cerr << "scout: warning: " << args.dataset
+              << ": no odometry; local SLAM predicts poses from scan matching alone\n";
+  } else if (args.odom_noise > 0.0) {
+    dataset.odometry = io::AddOdometryNoise(dataset.odometry, args.odom_noise, args.seed);
+  }
+  std::optional<io::ScanReference> reference;
+  if (!args.reference.empty()) reference = io::LoadScanReference(dataset, args.reference);
+  io::OutputDirectory out(args.out_dir);
+
+  const bool terminal = !args.quiet && ::isatty(STDERR_FILENO);
+  slam::MapBuilder builder(config.slam,
+                           [&engine](events::SubmapEvent event) { engine.Apply(event); });
+  const double data_start_s = dataset.scans.front().time_s;
+  const double data_duration_s = dataset.scans.back().time_s - data_start_s;
+  size_t next_odometry = 0;
+  const size_t num_scans = dataset.scans.size();
+  for (size_t i = 0; i < num_scans; ++i) {
+    const sensor::LaserScan& scan = dataset.scans[i];
+    while (next_odometry < dataset.odometry.size() &&
+           dataset.odometry[next_odometry].time_s <= scan.time_s) {
+      builder.AddOdometry(dataset.odometry[next_odometry++]);
+    }
+    builder.AddScan(scan);
+    const bool report = (i + 1) % 500 == 0 || i + 1 == num_scans;
+    if (report && !args.quiet) {
+      const double factor = (scan.time_s - data_start_s) / std::max(1e-9, wall.ElapsedUs() * 1e-6);
+      std::cerr << (terminal ? "\r" : "") << "replay: " << i + 1 << "/" << num_scans << " scans, "
+                << std::fixed << std::setprecision(1) << factor << "x real time"
+                << (terminal ? "" : "\n") << std::flush;
+    }
+  }
+  if (terminal) std::cerr << "\n";
+  builder.Finish();
+  const double wall_time_s = wall.ElapsedUs() * 1e-6;
+
+  const std::vector<slam::TimedPose> nodes = builder.GetTrajectory();
+  std::vector<io::StampedPose> trajectory;
+  trajectory.reserve(nodes.size());
+  for (const slam::TimedPose& n : nodes) trajectory.push_back({n.time_s, n.pose});
+  io::GlobalSubmaps submaps;
+  for (const slam::SubmapState& s : builder.GetSubmaps())
+    submaps.push_back({s.global_pose, s.grid});
+  const slam::SlamStats stats = builder.GetStats();
+
+  nlohmann::json summary;
+  summary["dataset"] = dataset.name;
+  summary["dataset_file"] = args.dataset;
+  summary["format"] = dataset.format;
+  summary["scans"] = num_scans;
+  summary["odometry_readings"] = dataset.odometry.size();
+  summary["odom_noise"] = args.odom_noise;
+  summary["seed"] = args.seed;
+  summary["warnings"] = dataset.warnings.size();
+  summary["data_duration_s"] = data_duration_s;
+  summary["wall_time_s"] = wall_time_s;
+  summary["realtime_factor"] = data_duration_s / std::max(1e-9, wall_time_s);
+  summary["peak_rss_mb"] = PeakResidentSetMiB();
+  summary["slam"] = {{"nodes", stats.num_nodes},
+                     {"submaps", stats.num_submaps},
+                     {"optimizations", stats.num_optimizations},
+                     {"loop_closures", stats.num_loop_closures},
+                     {"loop_closure_searches", stats.num_loop_closure_searches},
+                     {"solve_time_s", stats.total_solve_time_s},
+                     {"submap_events", stats.num_submap_events},
+                     {"synchronous", config.slam.pose_graph.synchronous}};
+  if (reference) {
+    const io::TrajectoryErrors errors =
+        io::ComputeTrajectoryErrors(PairNodesWithReference(dataset, *reference, nodes));
+    summary["reference"] = ReferenceSummary(errors, *reference);
+    summary["reference"]["file"] = args.reference;
+  }
+  summary["grid_changes"] = engine.grid_changes();
+  summary["submap_update_ms"] = engine.catalog_time_ms();
+  summary["frontier"] = io::FrontierSummary(engine);
+
+  io::WriteMapServerMap(submaps, out.Stage("map.yaml"));
+  // map_server's YAML names its image beside it.
+  out.Stage("map.pgm");
+  io::WriteMapPicture(submaps, trajectory, out.Stage("map.png"));
+  io::WriteTumTrajectory(trajectory, out.Stage("trajectory.tum"));
+  io::WriteFrontierCsv(engine, out.Stage("frontier.csv"));
+  io::WriteFrontierPicture(engine, args.picture_strategy, out.Stage("frontiers.png"));
+  WriteTextFileAtomically(out.Stage("summary.json"), summary.dump(2) + "\n");
+  out.Commit();
+
+  std::cout << "replay: " << dataset.name << ": " << num_scans << " scans, " << stats.num_nodes
+            << " nodes, " << stats.num_submaps << " submaps, " << stats.num_optimizations
+            << " optimisations, " << stats.num_loop_closures << " loop closures; " << std::fixed
+            << std::setprecision(1) << wall_time_s << " s wall, "
+            << summary["realtime_factor"].get<double>() << "x real time, "
+            << summary["peak_rss_mb"].get<double>() << " MiB peak\n";
+  if (reference) {
+    const nlohmann::json& r = summary["reference"];
+    std::cout << std::setprecision(3) << "reference: " << r["matched_scans"].get<int>()
+              << " nodes matched, ATE RMSE " << r["ate_rmse_m"].get<double>() << " m, RPE 1 s "
+              << r["rpe_1s_trans_m"].get<double>() << " m / " << r["rpe_1s_rot_deg"].get<double>()
+              << " deg, 10 s " << r["rpe_10s_trans_m"].get<double>() << " m / "
+              << r["rpe_10s_rot_deg"].get<double>() << " deg\n";
+  }
+  PrintStrategyTable(engine, std::cout);
+  std::cout << "outputs: " << (out.path() / "summary.json").string()
+            << ", map.yaml, map.pgm, map.png, trajectory.tum, frontier.csv, frontiers.png\n";
+  return 0;
+}
+
+}  // namespace scout::apps

@@ -1,0 +1,123 @@
+#include "scout/io/slam_config.h"
+
+#include <numbers>
+
+namespace scout::io {
+namespace {
+
+constexpr double kRadPerDeg = std::numbers::pi / 180.0;
+
+// Reads 'key' (degrees) into 'radians', leaving it unchanged when absent.
+void ReadPositiveDegrees(YamlSection& s, const std::string& key, double* radians) {
+  double degrees = *radians / kRadPerDeg;
+  s.ReadPositive(key, &degrees);
+  *radians = degrees * kRadPerDeg;
+}
+
+void ReadAdaptiveVoxelFilter(YamlSection s, slam::AdaptiveVoxelFilterOptions* o) {
+  s.ReadPositive("max_length_m", &o->max_length_m);
+  s.ReadInt("min_num_points", &o->min_num_points, 1);
+  s.ReadPositive("max_range_m", &o->max_range_m);
+  s.RejectUnknownKeys();
+}
+
+void ReadCeresScanMatcher(YamlSection s, slam::CeresScanMatcherOptions* o) {
+  s.ReadPositive("occupied_space_weight", &o->occupied_space_weight);
+  s.ReadNonNegative("translation_weight", &o->translation_weight);
+  s.ReadNonNegative("rotation_weight", &o->rotation_weight);
+  s.ReadInt("max_num_iterations", &o->max_num_iterations, 1);
+  s.RejectUnknownKeys();
+}
+
+void ReadLocal(YamlSection s, slam::LocalSlamOptions* o) {
+  {
+    YamlSection r = s.Section("range_filter");
+    r.ReadNonNegative("min_range_m", &o->range_filter.min_range_m);
+    r.ReadPositive("max_range_m", &o->range_filter.max_range_m);
+    r.ReadNonNegative("miss_ray_length_m", &o->range_filter.miss_ray_length_m);
+    r.RejectUnknownKeys();
+  }
+  s.ReadPositive("voxel_filter_size_m", &o->voxel_filter_size_m);
+  ReadAdaptiveVoxelFilter(s.Section("adaptive_voxel_filter"), &o->adaptive_voxel_filter);
+  s.ReadBool("use_online_correlative_scan_matching", &o->use_online_correlative_scan_matching);
+  {
+    YamlSection c = s.Section("real_time_correlative_scan_matcher");
+    slam::RealTimeCorrelativeScanMatcherOptions& m = o->real_time_correlative_scan_matcher;
+    c.ReadPositive("linear_search_window_m", &m.linear_search_window_m);
+    ReadPositiveDegrees(c, "angular_search_window_deg", &m.angular_search_window_rad);
+    c.ReadNonNegative("translation_delta_cost_weight", &m.translation_delta_cost_weight);
+    c.ReadNonNegative("rotation_delta_cost_weight", &m.rotation_delta_cost_weight);
+    c.RejectUnknownKeys();
+  }
+  ReadCeresScanMatcher(s.Section("ceres_scan_matcher"), &o->ceres_scan_matcher);
+  {
+    YamlSection m = s.Section("motion_filter");
+    m.ReadPositive("max_time_s", &o->motion_filter.max_time_s);
+    m.ReadNonNegative("max_distance_m", &o->motion_filter.max_distance_m);
+    ReadPositiveDegrees(m, "max_angle_deg", &o->motion_filter.max_angle_rad);
+    m.RejectUnknownKeys();
+  }
+  {
+    YamlSection m = s.Section("submaps");
+    m.ReadPositive("resolution_m", &o->submaps.resolution_m);
+    m.ReadInt("num_range_data", &o->submaps.num_range_data, 1);
+    m.ReadPositive("hit_probability", &o->submaps.insertion.hit_probability);
+    m.ReadPositive("miss_probability", &o->submaps.insertion.miss_probability);
+    m.RejectUnknownKeys();
+  }
+  s.RejectUnknownKeys();
+}
+
+void ReadPoseGraph(YamlSection s, slam::PoseGraphOptions* o) {
+  s.ReadInt("optimize_every_n_nodes", &o->optimize_every_n_nodes, 0);
+  s.ReadBool("synchronous", &o->synchronous);
+  s.ReadNonNegative("intra_submap_translation_weight", &o->intra_submap_translation_weight);
+  s.ReadNonNegative("intra_submap_rotation_weight", &o->intra_submap_rotation_weight);
+  ReadAdaptiveVoxelFilter(s.Section("loop_closure_voxel_filter"), &o->loop_closure_voxel_filter);
+  {
+    YamlSection c = s.Section("constraint_builder");
+    slam::ConstraintBuilderOptions& b = o->constraint_builder;
+    c.ReadPositive("sampling_ratio", &b.sampling_ratio);
+    c.ReadPositive("max_constraint_distance_m", &b.max_constraint_distance_m);
+    c.ReadPositive("min_score", &b.min_score);
+    c.ReadNonNegative("loop_closure_translation_weight", &b.loop_closure_translation_weight);
+    c.ReadNonNegative("loop_closure_rotation_weight", &b.loop_closure_rotation_weight);
+    {
+      YamlSection f = c.Section("fast_correlative_scan_matcher");
+      f.ReadPositive("linear_search_window_m",
+                     &b.fast_correlative_scan_matcher.linear_search_window_m);
+      ReadPositiveDegrees(f, "angular_search_window_deg",
+                          &b.fast_correlative_scan_matcher.angular_search_window_rad);
+      f.ReadInt("branch_and_bound_depth", &b.fast_correlative_scan_matcher.branch_and_bound_depth,
+                1);
+      f.RejectUnknownKeys();
+    }
+    ReadCeresScanMatcher(c.Section("ceres_scan_matcher"), &b.ceres_scan_matcher);
+    c.RejectUnknownKeys();
+  }
+  {
+    YamlSection p = s.Section("optimization_problem");
+    slam::OptimizationProblemOptions& q = o->optimization_problem;
+    p.ReadPositive("huber_scale", &q.huber_scale);
+    p.ReadNonNegative("local_slam_pose_translation_weight", &q.local_slam_pose_translation_weight);
+    p.ReadNonNegative("local_slam_pose_rotation_weight", &q.local_slam_pose_rotation_weight);
+    p.ReadBool("use_odometry_constraints", &q.use_odometry_constraints);
+    p.ReadNonNegative("odometry_translation_weight", &q.odometry_translation_weight);
+    p.ReadNonNegative("odometry_rotation_weight", &q.odometry_rotation_weight);
+    p.ReadInt("max_num_iterations", &q.max_num_iterations, 1);
+    p.ReadInt("num_threads", &q.num_threads, 1);
+    p.RejectUnknownKeys();
+  }
+  s.RejectUnknownKeys();
+}
+
+}  // namespace
+
+void ReadSlamOptions(YamlSection section, slam::SlamOptions* options) {
+  ReadLocal(section.Section("local"), &options->local);
+  ReadPoseGraph(section.Section("pose_graph"), &options->pose_graph);
+  section.ReadInt("submap_event_every_n_insertions", &options->submap_event_every_n_insertions, 1);
+  section.RejectUnknownKeys();
+}
+
+}  // namespace scout::io

@@ -1,0 +1,15 @@
+#ifndef SCOUT_IO_SLAM_CONFIG_H_
+#define SCOUT_IO_SLAM_CONFIG_H_
+
+#include "scout/io/yaml_fields.h"
+#include "scout/slam/map_builder.h"
+
+namespace scout::io {
+
+// Reads the "slam" section of an options file (see config/default.yaml).
+// Angles are given in degrees in the file (keys ending in _deg).
+void ReadSlamOptions(YamlSection section, slam::SlamOptions* options);
+
+}  // namespace scout::io
+
+#endif  // SCOUT_IO_SLAM_CONFIG_H_
