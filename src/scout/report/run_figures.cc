@@ -1,5 +1,7 @@
 #include "scout/report/run_figures.h"
 
+#include <algorithm>
+
 #include "scout/report/strategy_stats.h"
 #include "scout/report/svg_plot.h"
 
@@ -20,6 +22,24 @@ std::vector<Series> PerStrategy(const std::vector<FrontierRound>& rounds,
     series.push_back(std::move(s));
   }
   return series;
+}
+
+// Returns the largest over the smallest per-series median of the positive
+// values (1 when fewer than two series have any).
+double MedianSpread(const std::vector<Series>& series) {
+  std::vector<double> medians;
+  for (const Series& s : series) {
+    std::vector<double> positive;
+    for (const double y : s.y) {
+      if (y > 0.0) positive.push_back(y);
+    }
+    if (positive.empty()) continue;
+    std::nth_element(positive.begin(), positive.begin() + positive.size() / 2, positive.end());
+    medians.push_back(positive[positive.size() / 2]);
+  }
+  if (medians.size() < 2) return 1.0;
+  const auto [lo, hi] = std::minmax_element(medians.begin(), medians.end());
+  return *hi / *lo;
 }
 
 std::string WithRun(const std::string& title, const RunData& run) {
@@ -59,6 +79,10 @@ void AddFrontierFigures(const RunData& run, std::vector<Figure>* figures) {
   time.x_label = "optimisation round";
   time.y_label = "update time (ms)";
   time.series = PerStrategy(run.rounds, [](const FrontierRound& r) { return r.time_us * 1e-3; });
+  // One slow strategy (full) flattens the others against the axis on a linear
+  // scale; a log axis keeps their differences readable.
+  time.log_y = MedianSpread(time.series) >= 5.0;
+  if (time.log_y) time.y_label += ", log scale";
   figures->push_back({"update_time", "Wall time each strategy spent on each optimisation round.",
                       RenderLineChart(time)});
 

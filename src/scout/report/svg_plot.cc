@@ -13,6 +13,7 @@ namespace scout::report {
 namespace {
 
 constexpr double kCharWidthPx = 6.6;  // rough width of a 12 px sans-serif glyph
+constexpr double kValueCharPx = 6.4;  // a 10 px digit, with room to breathe
 constexpr double kLegendRowPx = 20.0;
 constexpr double kMarginLeftPx = 78.0;
 constexpr double kMarginRightPx = 24.0;
@@ -356,7 +357,7 @@ std::string RenderBarChart(const BarChart& chart) {
         std::snprintf(text, sizeof(text), chart.value_format.c_str(), v);
       }
       const double cx = x + bar / 2;
-      const double text_px = kCharWidthPx * 0.85 * std::string(text).size();
+      const double text_px = kValueCharPx * std::string(text).size();
       // Labels wider than their bar are turned upright so neighbours never overlap.
       const bool upright = text_px > bar - 2;
       const double height = std::abs(baseline - y);
