@@ -24,7 +24,8 @@ CLI::App* AddFrontierBenchCommand(CLI::App& app, FrontierBenchArgs* args);
 
 // Runs the lockstep frontier evaluation on a synthetic SLAM event stream and
 // writes summary.json, frontier.csv, frontiers.png, report.html and
-// figures/*.svg into the output directory. Returns the process exit code; throws InputError on bad input.
+// figures/*.svg into the output directory. Returns the process exit code; throws InputError on bad
+// input.
 int RunFrontierBench(const FrontierBenchArgs& args);
 
 }  // namespace scout::apps
