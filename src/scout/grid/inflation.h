@@ -11,7 +11,8 @@ namespace scout::grid {
 
 // Returns a row-major mask (1 = blocked) of every cell whose centre lies within
 // 'radius_m' (inclusive) of the centre of an occupied cell, occupied cells
-// included. Uses the exact Euclidean distance transform, not a square kernel.
+// included: the exact Euclidean test on cell centres (a disc, not a square
+// kernel), in time linear in the number of cells.
 // 'states' is row-major over 'limits'.
 std::vector<uint8_t> InflateOccupied(const std::vector<CellState>& states, const MapLimits& limits,
                                      double radius_m);
