@@ -22,7 +22,7 @@ build: configure
 	cmake --build --preset $(PRESET) -j $(JOBS)
 
 run: build
-	$(SCOUT) frontier-bench --world office --seed 1 --out out/office
+	$(SCOUT) explore --world office --seed 1 --out out/explore
 
 test: build
 	ctest --preset $(PRESET)

@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "apps/scout/compare_command.h"
+#include "apps/scout/explore_command.h"
 #include "apps/scout/frontier_bench_command.h"
 #include "apps/scout/replay_command.h"
 #include "apps/scout/report_command.h"
@@ -24,6 +25,8 @@ int main(int argc, char** argv) {
   CLI::App* compare = scout::apps::AddCompareCommand(app, &compare_args);
   scout::apps::ReplayArgs replay_args;
   CLI::App* replay = scout::apps::AddReplayCommand(app, &replay_args);
+  scout::apps::ExploreArgs explore_args;
+  CLI::App* explore = scout::apps::AddExploreCommand(app, &explore_args);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -41,6 +44,7 @@ int main(int argc, char** argv) {
     if (report->parsed()) return scout::apps::RunReport(report_args);
     if (compare->parsed()) return scout::apps::RunCompare(compare_args);
     if (replay->parsed()) return scout::apps::RunReplay(replay_args);
+    if (explore->parsed()) return scout::apps::RunExplore(explore_args);
   } catch (const scout::InputError& e) {
     std::cerr << "scout: error: " << e.what() << "\n";
     return 2;

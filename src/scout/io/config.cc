@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "scout/common/error.h"
+#include "scout/io/explore_config.h"
 #include "scout/io/slam_config.h"
 #include "scout/io/yaml_fields.h"
 
@@ -105,6 +106,8 @@ ScoutConfig LoadConfig(const std::filesystem::path& path) {
   ReadFrontier(top.Section("frontier"), &config.frontier);
   ReadSynthetic(top.Section("synthetic"), &config.synthetic);
   ReadSlamOptions(top.Section("slam"), &config.slam);
+  ReadExploreOptions(top.Section("explore"), &config.explore);
+  ReadRobotOptions(top.Section("robot"), &config.robot);
   top.RejectUnknownKeys();
   frontier::Validate(config.frontier);
   try {
@@ -112,6 +115,7 @@ ScoutConfig LoadConfig(const std::filesystem::path& path) {
   } catch (const std::invalid_argument& e) {
     throw InputError(path.string() + ": " + e.what());
   }
+  ValidateExploreAndRobot(config.explore, config.robot, path.string());
   return config;
 }
 

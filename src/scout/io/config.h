@@ -3,7 +3,9 @@
 
 #include <filesystem>
 
+#include "scout/exploration/exploration_options.h"
 #include "scout/frontier/frontier_options.h"
+#include "scout/sim/simulated_robot.h"
 #include "scout/slam/map_builder.h"
 #include "scout/synthetic/synthetic_stream.h"
 
@@ -15,6 +17,8 @@ struct ScoutConfig {
   frontier::FrontierOptions frontier;
   synthetic::SyntheticStreamOptions synthetic;
   slam::SlamOptions slam;
+  exploration::ExploreOptions explore;
+  sim::SimulatedRobotOptions robot;
 };
 
 // Reads a YAML options file; absent keys keep their defaults. Throws

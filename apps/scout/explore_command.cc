@@ -1,0 +1,235 @@
+#include "apps/scout/explore_command.h"
+
+#include <unistd.h>
+
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "scout/common/atomic_file.h"
+#include "scout/common/error.h"
+#include "scout/exploration/exploration_loop.h"
+#include "scout/frontier/stopwatch.h"
+#include "scout/io/config.h"
+#include "scout/io/frontier_report.h"
+#include "scout/io/map_picture.h"
+#include "scout/io/output_directory.h"
+#include "scout/io/trajectory_metrics.h"
+#include "scout/io/tum_trajectory.h"
+#include "scout/sim/make_world.h"
+
+namespace scout::apps {
+namespace {
+
+// Parses "X,Y" (metres, world frame).
+Eigen::Vector2d ParseStart(const std::string& text) {
+  std::istringstream in(text);
+  double x = 0.0, y = 0.0;
+  char comma = 0;
+  if (!(in >> x >> comma >> y) || comma != ',' || !(in >> std::ws).eof() || !std::isfinite(x) ||
+      !std::isfinite(y)) {
+    throw InputError("--start '" + text + "': expected X,Y in metres, e.g. --start 2.5,-1");
+  }
+  return {x, y};
+}
+
+exploration::ExplorationOptions MakeOptions(const ExploreArgs& args) {
+  const io::ScoutConfig config =
+      args.config_file.empty() ? io::ScoutConfig{} : io::LoadConfig(args.config_file);
+  exploration::ExplorationOptions o;
+  o.explore = config.explore;
+  o.robot = config.robot;
+  o.slam = config.slam;
+  o.frontier = config.frontier;
+  o.explore.strategy = args.strategy;
+  o.explore.goal_policy = args.goals;
+  if (args.max_sim_time_s) {
+    if (!(*args.max_sim_time_s > 0.0)) {
+      throw InputError("--max-sim-time: expected a positive number of seconds");
+    }
+    o.explore.max_sim_time_s = *args.max_sim_time_s;
+  }
+  if (!args.start.empty()) o.start = ParseStart(args.start);
+  exploration::CheckExplorationOptions(o);
+  return o;
+}
+
+std::vector<io::StampedPose> ToWorld(const std::vector<slam::TimedPose>& poses,
+                                     const geometry::Rigid2d& world_from_map) {
+  std::vector<io::StampedPose> out;
+  out.reserve(poses.size());
+  for (const slam::TimedPose& p : poses) out.push_back({p.time_s, world_from_map * p.pose});
+  return out;
+}
+
+// Pairs every SLAM node with the true pose at its scan's time (both carry the
+// simulator's stamp of that scan).
+std::vector<io::PosePair> PairWithTruth(const std::vector<io::StampedPose>& estimate,
+                                        const std::vector<slam::TimedPose>& truth) {
+  std::map<double, geometry::Rigid2d> by_time;
+  for (const slam::TimedPose& t : truth) by_time.emplace(t.time_s, t.pose);
+  std::vector<io::PosePair> pairs;
+  for (const io::StampedPose& e : estimate) {
+    const auto it = by_time.find(e.time_s);
+    if (it != by_time.end()) pairs.push_back({e.time_s, e.pose, it->second});
+  }
+  return pairs;
+}
+
+nlohmann::json OptionalSeconds(const std::optional<double>& t) {
+  return t ? nlohmann::json(*t) : nlohmann::json(nullptr);
+}
+
+nlohmann::json Summary(const ExploreArgs& args, const exploration::ExplorationLoop& loop,
+                       const exploration::ExplorationResult& r, double wall_time_s,
+                       double ate_rmse_m) {
+  nlohmann::json s;
+  s["world"] = loop.world().name;
+  s["seed"] = args.seed;
+  s["strategy"] = args.strategy;
+  s["goals_policy"] = args.goals;
+  s["terminated"] = std::string(exploration::ToString(r.terminated));
+  s["coverage"] = r.coverage;
+  s["mapped_free_m2"] = r.mapped_free_m2;
+  s["reachable_free_m2"] = r.reachable_free_m2;
+  s["path_length_m"] = r.path_length_m;
+  s["sim_time_s"] = r.sim_time_s;
+  s["wall_time_s"] = wall_time_s;
+  s["time_to_coverage_s"] = {{"0.90", OptionalSeconds(r.time_to_coverage_s[0])},
+                             {"0.95", OptionalSeconds(r.time_to_coverage_s[1])},
+                             {"0.99", OptionalSeconds(r.time_to_coverage_s[2])}};
+  s["goals"] = {
+      {"issued", r.counters.goals_issued},       {"reached", r.counters.goals_reached},
+      {"failed", r.counters.goals_failed},       {"unreachable", r.unreachable_goals},
+      {"no_plan", r.counters.goals_unreachable}, {"superseded", r.counters.goals_superseded},
+      {"retried", r.counters.goals_retried}};
+  s["returned_home"] = r.returned_home;
+  s["collisions"] = r.collisions;
+  s["ate_rmse_m"] = ate_rmse_m;
+  const slam::SlamStats stats = loop.map_builder().GetStats();
+  s["slam"] = {{"nodes", stats.num_nodes},
+               {"submaps", stats.num_submaps},
+               {"optimizations", stats.num_optimizations},
+               {"loop_closures", stats.num_loop_closures},
+               {"loop_closure_searches", stats.num_loop_closure_searches},
+               {"solve_time_s", stats.total_solve_time_s},
+               {"scans", stats.num_scans},
+               {"synchronous", loop.options().slam.pose_graph.synchronous}};
+  s["frontier"] = io::FrontierSummary(loop.frontier_engine());
+  const exploration::LoopTimings& t = r.timings;
+  s["wall_time_breakdown_s"] = {{"simulation", t.simulation_s},
+                                {"slam", t.slam_s},
+                                {"frontier", t.frontier_s},
+                                {"map_fusion", t.map_fusion_s},
+                                {"goals", t.goals_s}};
+  const geometry::Rigid2d& start = loop.world_from_map();
+  s["start"] = {start.translation().x(), start.translation().y(), start.theta()};
+  return s;
+}
+
+void WriteCoverageCsv(const std::vector<exploration::CoverageSample>& samples,
+                      const std::filesystem::path& path) {
+  std::ostringstream csv;
+  csv << "sim_time_s,path_length_m,coverage\n" << std::setprecision(6);
+  for (const exploration::CoverageSample& s : samples) {
+    csv << s.sim_time_s << "," << s.path_length_m << "," << s.coverage << "\n";
+  }
+  WriteTextFileAtomically(path, csv.str());
+}
+
+void PrintProgress(const exploration::ExplorationProgress& p, bool terminal) {
+  std::cerr << (terminal ? "\r" : "") << "explore: t=" << std::fixed << std::setprecision(0)
+            << p.sim_time_s << " s coverage " << std::setprecision(1) << 100.0 * p.coverage
+            << " % goals " << p.counters.goals_issued << " issued / " << p.counters.goals_reached
+            << " reached / " << p.counters.goals_failed << " failed, " << explore::ToString(p.state)
+            << (terminal ? "   " : "\n") << std::flush;
+}
+
+}  // namespace
+
+CLI::App* AddExploreCommand(CLI::App& app, ExploreArgs* args) {
+  CLI::App* cmd = app.add_subcommand(
+      "explore",
+      "Explore a simulated world in closed loop: simulator, SLAM, reachable frontiers, "
+      "navigation points and path following");
+  cmd->add_option("--world", args->world, "office, museum (generated) or a map_server .yaml")
+      ->capture_default_str();
+  cmd->add_option("--seed", args->seed, "seed of the generated world and the sensor noise")
+      ->capture_default_str();
+  cmd->add_option("--out", args->out_dir, "output directory")->capture_default_str();
+  cmd->add_option("--config", args->config_file, "YAML options file (see config/default.yaml)");
+  cmd->add_option("--strategy", args->strategy, "frontier update strategy")
+      ->check(CLI::IsMember({"exact", "direct", "bfs", "dfd", "full"}))
+      ->capture_default_str();
+  cmd->add_option("--goals", args->goals, "goal policy")
+      ->check(CLI::IsMember({"scout", "nearest", "explore-lite", "meanshift-centres"}))
+      ->capture_default_str();
+  cmd->add_option("--max-sim-time", args->max_sim_time_s,
+                  "stop after this much simulated time, seconds (default: explore.max_sim_time_s)");
+  cmd->add_option("--start", args->start, "start position X,Y in metres (default: the world's)");
+  cmd->add_flag("--quiet", args->quiet, "print only the final summary");
+  return cmd;
+}
+
+int RunExplore(const ExploreArgs& args) {
+  const frontier::Stopwatch wall;
+  // Everything that can be wrong with the input is found before any output.
+  const exploration::ExplorationOptions options = MakeOptions(args);
+  const sim::World world = sim::MakeWorld(args.world, args.seed);
+  exploration::ExplorationLoop loop(world, options, args.seed);
+  io::OutputDirectory out(args.out_dir);
+
+  const bool terminal = !args.quiet && ::isatty(STDERR_FILENO);
+  exploration::ExplorationLoop::ProgressCallback progress;
+  if (!args.quiet) {
+    progress = [terminal](const exploration::ExplorationProgress& p) {
+      PrintProgress(p, terminal);
+    };
+  }
+  const exploration::ExplorationResult result = loop.Run(progress, terminal ? 5.0 : 60.0);
+  if (terminal) std::cerr << "\n";
+  const double wall_time_s = wall.ElapsedUs() * 1e-6;
+
+  const geometry::Rigid2d& world_from_map = loop.world_from_map();
+  const std::vector<io::StampedPose> estimate =
+      ToWorld(loop.map_builder().GetTrajectory(), world_from_map);
+  const std::vector<io::StampedPose> truth = ToWorld(result.truth, geometry::Rigid2d());
+  const std::vector<io::PosePair> pairs = PairWithTruth(estimate, result.truth);
+  const double ate_rmse_m = io::ComputeTrajectoryErrors(pairs).ate_rmse_m;
+  io::GlobalSubmaps submaps;
+  for (const slam::SubmapState& s : loop.map_builder().GetSubmaps()) {
+    submaps.push_back({world_from_map * s.global_pose, s.grid});
+  }
+  const nlohmann::json summary = Summary(args, loop, result, wall_time_s, ate_rmse_m);
+
+  io::WriteMapServerMap(submaps, out.Stage("map.yaml"));
+  out.Stage("map.pgm");  // map_server's YAML names its image beside it
+  io::WriteMapPicture(submaps, estimate, out.Stage("map.png"));
+  io::WriteTumTrajectory(estimate, out.Stage("trajectory.tum"));
+  io::WriteTumTrajectory(truth, out.Stage("truth.tum"));
+  io::WriteFrontierCsv(loop.frontier_engine(), out.Stage("frontier.csv"));
+  WriteCoverageCsv(result.coverage_samples, out.Stage("coverage.csv"));
+  WriteTextFileAtomically(out.Stage("summary.json"), summary.dump(2) + "\n");
+  out.Commit();
+
+  std::cout << std::fixed << std::setprecision(3) << "explore: " << world.name << " seed "
+            << args.seed << ": " << summary["terminated"].get<std::string>() << ", coverage "
+            << result.coverage << " (" << std::setprecision(1) << result.mapped_free_m2 << " of "
+            << result.reachable_free_m2 << " m2), path " << result.path_length_m << " m, sim "
+            << result.sim_time_s << " s, wall " << wall_time_s << " s ("
+            << result.sim_time_s / std::max(1e-9, wall_time_s) << "x)\n"
+            << "goals: " << result.counters.goals_issued << " issued, "
+            << result.counters.goals_reached << " reached, " << result.counters.goals_failed
+            << " failed, " << result.unreachable_goals << " unreachable in truth; collisions "
+            << result.collisions << "; ATE RMSE " << std::setprecision(3) << ate_rmse_m << " m\n"
+            << "outputs: " << (out.path() / "summary.json").string()
+            << ", map.yaml, map.pgm, map.png, trajectory.tum, truth.tum, frontier.csv, "
+               "coverage.csv\n";
+  return 0;
+}
+
+}  // namespace scout::apps

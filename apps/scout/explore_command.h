@@ -1,0 +1,34 @@
+#ifndef SCOUT_APPS_SCOUT_EXPLORE_COMMAND_H_
+#define SCOUT_APPS_SCOUT_EXPLORE_COMMAND_H_
+
+#include <CLI/CLI.hpp>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace scout::apps {
+
+struct ExploreArgs {
+  std::string world = "office";
+  uint64_t seed = 1;
+  std::string out_dir = "out/explore";
+  std::string config_file;
+  std::string strategy = "exact";
+  std::string goals = "scout";
+  std::optional<double> max_sim_time_s;
+  std::string start;  // "X,Y", empty: the world's own start
+  bool quiet = false;
+};
+
+// Registers `scout explore` on 'app'.
+CLI::App* AddExploreCommand(CLI::App& app, ExploreArgs* args);
+
+// Explores a simulated world in closed loop (simulator, SLAM, frontier, goals)
+// and writes map.yaml/pgm, map.png, trajectory.tum, truth.tum, frontier.csv,
+// coverage.csv and summary.json. Returns the process exit code; throws
+// InputError on bad input before writing anything.
+int RunExplore(const ExploreArgs& args);
+
+}  // namespace scout::apps
+
+#endif  // SCOUT_APPS_SCOUT_EXPLORE_COMMAND_H_

@@ -1,0 +1,232 @@
+#include "scout/exploration/exploration_loop.h"
+
+#include <algorithm>
+#include <utility>
+
+#include "scout/frontier/stopwatch.h"
+#include "scout/grid/submap_fusion.h"
+
+namespace scout::exploration {
+namespace {
+
+// Applies the loop's overrides before anything is built from the options.
+ExplorationOptions Prepared(const ExplorationOptions& options) {
+  CheckExplorationOptions(options);
+  ExplorationOptions o = options;
+  if (o.explore.synchronous_slam) o.slam.pose_graph.synchronous = true;
+  return o;
+}
+
+sim::World WithStart(const sim::World& world, const std::optional<Eigen::Vector2d>& start) {
+  sim::World w = world;
+  if (start) w.start = *start;
+  return w;
+}
+
+std::vector<std::string> EngineStrategies(const ExploreOptions& e) { return {e.strategy}; }
+
+}  // namespace
+
+std::string_view ToString(Termination termination) {
+  switch (termination) {
+    case Termination::kComplete:
+      return "complete";
+    case Termination::kMaxSimTime:
+      return "max_sim_time";
+    case Termination::kNoProgress:
+      return "no_progress";
+  }
+  return "unknown";
+}
+
+ExplorationLoop::ExplorationLoop(const sim::World& world, const ExplorationOptions& options,
+                                 uint64_t seed)
+    : options_(Prepared(options)),
+      world_(WithStart(world, options.start)),
+      truth_(world_.map, world_.name, world_.start, PlanningTraversability(options_),
+             options_.robot.robot.radius_m),
+      robot_(world_, options_.robot, seed),
+      engine_(options_.frontier, EngineStrategies(options_.explore),
+              options_.explore.evaluate_frontier),
+      goals_(options_.explore.goals, PlanningTraversability(options_), options_.explore.planner,
+             options_.explore.follower,
+             explore::MakeGoalPolicy(options_.explore.goal_policy, options_.explore.policy)),
+      world_from_map_(robot_.true_pose()) {
+  // Local SLAM's frame starts at the first scan's pose, which is the start.
+  builder_ = std::make_unique<slam::MapBuilder>(options_.slam, [this](events::SubmapEvent event) {
+    const frontier::Stopwatch watch;
+    engine_.Apply(event);
+    result_.timings.frontier_s += watch.ElapsedUs() * 1e-6;
+    slam_changed_ = true;
+  });
+  latest_odometry_ = robot_.OdometryReading().pose;
+  odometry_at_last_local_ = latest_odometry_;
+  result_.time_to_coverage_s.assign(std::size(kCoverageThresholds), std::nullopt);
+}
+
+void ExplorationLoop::FeedSensors() {
+  const frontier::Stopwatch watch;
+  const double frontier_before_s = result_.timings.frontier_s;
+  FeedSensorsUntimed();
+  result_.timings.slam_s +=
+      watch.ElapsedUs() * 1e-6 - (result_.timings.frontier_s - frontier_before_s);
+}
+
+void ExplorationLoop::FeedSensorsUntimed() {
+  if (std::optional<sensor::Odometry> odometry = robot_.MaybeOdometry()) {
+    builder_->AddOdometry(*odometry);
+    latest_odometry_ = odometry->pose;
+  }
+  std::optional<sensor::LaserScan> scan = robot_.MaybeScan();
+  if (!scan) return;
+  result_.truth.push_back({scan->time_s, robot_.true_pose()});
+  const bool inserted = builder_->AddScan(*scan);
+  builder_->DrainEvents();
+  const slam::LocalTrajectoryBuilder& local = builder_->local_trajectory_builder();
+  const slam::LocalTrajectoryBuilder::Statistics& stats = local.statistics();
+  // A scan that local SLAM accepted (matched or the very first) moved last_pose.
+  const int accepted = stats.num_scans - stats.num_empty_scans - stats.num_out_of_order_scans;
+  if (accepted != accepted_scans_) {
+    accepted_scans_ = accepted;
+    last_local_ = local.last_pose();
+    odometry_at_last_local_ = latest_odometry_;
+  }
+  if (inserted || slam_changed_) {
+    // The newest node ties the local frame to the global one; optimisations
+    // move it, so it is re-read after every insertion or event.
+    const std::vector<slam::TimedPose> nodes = builder_->GetTrajectory();
+    if (!nodes.empty() && inserted) {
+      global_from_local_ = nodes.back().pose * last_local_.inverse();
+      newest_node_local_ = last_local_;
+    } else if (!nodes.empty()) {
+      global_from_local_ = nodes.back().pose * newest_node_local_.inverse();
+    }
+  }
+}
+
+geometry::Rigid2d ExplorationLoop::EstimatedPose() const {
+  return global_from_local_ * last_local_ * (odometry_at_last_local_.inverse() * latest_odometry_);
+}
+
+bool ExplorationLoop::MaybeUpdateMap(bool force) {
+  const double t = robot_.sim_time_s();
+  if (!force &&
+      (!slam_changed_ || t - last_map_update_s_ < options_.explore.map_update_interval_s)) {
+    return false;
+  }
+  const frontier::Stopwatch watch;
+  slam_changed_ = false;
+  last_map_update_s_ = t;
+  const std::vector<slam::SubmapState> submaps = builder_->GetSubmaps();
+  std::vector<grid::PlacedGrid> placed;
+  submap_poses_.clear();
+  for (size_t i = 0; i < submaps.size(); ++i) {
+    placed.push_back({submaps[i].grid.get(), submaps[i].global_pose});
+    submap_poses_.push_back({static_cast<int>(i), submaps[i].global_pose});
+  }
+  fused_map_ = grid::FuseSubmaps(placed, options_.slam.local.submaps.resolution_m);
+  frontier_ = engine_.GlobalFrontier(options_.explore.strategy);
+  MeasureCoverage();
+  result_.timings.map_fusion_s += watch.ElapsedUs() * 1e-6;
+  return true;
+}
+
+void ExplorationLoop::MeasureCoverage() {
+  const double t = robot_.sim_time_s();
+  result_.reachable_free_m2 = truth_.reachable_free_m2();
+  result_.mapped_free_m2 = truth_.MappedFreeM2(fused_map_, world_from_map_);
+  result_.coverage = result_.mapped_free_m2 / result_.reachable_free_m2;
+  for (size_t i = 0; i < std::size(kCoverageThresholds); ++i) {
+    if (!result_.time_to_coverage_s[i] && result_.coverage >= kCoverageThresholds[i]) {
+      result_.time_to_coverage_s[i] = t;
+    }
+  }
+  if (result_.coverage >= best_coverage_ + options_.explore.min_coverage_gain) {
+    best_coverage_ = result_.coverage;
+    last_gain_s_ = t;
+  }
+}
+
+void ExplorationLoop::RecordIssuedGoal(const Eigen::Vector2d& goal_map) {
+  IssuedGoal g;
+  g.sim_time_s = robot_.sim_time_s();
+  g.goal_world = world_from_map_ * goal_map;
+  g.robot_world = robot_.true_pose().translation();
+  // Reached means within the follower's tolerance, so that is the slack.
+  g.reachable_in_truth =
+      truth_.DiscCanReach(g.robot_world, g.goal_world, options_.explore.follower.goal_tolerance_m);
+  result_.unreachable_goals += !g.reachable_in_truth;
+  result_.goals.push_back(g);
+}
+
+std::optional<Termination> ExplorationLoop::CheckTermination(
+    const explore::ExploreStatus& status) const {
+  const double t = robot_.sim_time_s();
+  if (status.state == explore::ExploreState::kFinished) return Termination::kComplete;
+  if (t >= options_.explore.max_sim_time_s) return Termination::kMaxSimTime;
+  if (t - last_gain_s_ >= options_.explore.no_progress_timeout_s) return Termination::kNoProgress;
+  return std::nullopt;
+}
+
+ExplorationResult ExplorationLoop::Run(const ProgressCallback& progress,
+                                       double progress_interval_s) {
+  const ExploreOptions& e = options_.explore;
+  goals_.Start();
+  FeedSensors();  // the readings of t = 0
+  double next_sample_s = 0.0;
+  double next_progress_s = 0.0;
+  while (true) {
+    const double t = robot_.sim_time_s();
+    const bool changed = MaybeUpdateMap(/*force=*/fused_map_.limits.num_cells() == 0);
+    explore::ExploreStatus status;
+    if (fused_map_.limits.num_cells() > 0) {
+      const int issued_before = goals_.counters().goals_issued;
+      explore::ExploreInput in;
+      in.time_s = t;
+      in.robot_pose = EstimatedPose();
+      in.map = &fused_map_;
+      in.frontier = &frontier_;
+      in.submaps = submap_poses_;
+      in.map_changed = changed;
+      const frontier::Stopwatch watch;
+      status = goals_.Update(in);
+      result_.timings.goals_s += watch.ElapsedUs() * 1e-6;
+      if (goals_.counters().goals_issued > issued_before && status.goal) {
+        RecordIssuedGoal(*status.goal);
+      }
+    }
+    if (t >= next_sample_s) {
+      result_.coverage_samples.push_back({t, robot_.path_length_m(), result_.coverage});
+      next_sample_s += e.coverage_interval_s;
+    }
+    if (progress && t >= next_progress_s) {
+      progress({t, result_.coverage, goals_.state(), goals_.counters()});
+      next_progress_s += progress_interval_s;
+    }
+    if (std::optional<Termination> end = CheckTermination(status)) {
+      result_.terminated = *end;
+      result_.returned_home = status.returned_home;
+      break;
+    }
+    const frontier::Stopwatch watch;
+    robot_.Step(status.command.linear_mps, status.command.angular_radps, e.dt_s);
+    result_.timings.simulation_s += watch.ElapsedUs() * 1e-6;
+    FeedSensors();
+  }
+  // The final optimisation may still move submaps: measure the map users get.
+  builder_->Finish();
+  slam_changed_ = true;
+  MaybeUpdateMap(/*force=*/true);
+  const double t = robot_.sim_time_s();
+  if (result_.coverage_samples.empty() || result_.coverage_samples.back().sim_time_s < t) {
+    result_.coverage_samples.push_back({t, robot_.path_length_m(), result_.coverage});
+  }
+  result_.sim_time_s = t;
+  result_.path_length_m = robot_.path_length_m();
+  result_.collisions = robot_.collisions();
+  result_.counters = goals_.counters();
+  if (progress) progress({t, result_.coverage, goals_.state(), goals_.counters()});
+  return std::move(result_);
+}
+
+}  // namespace scout::exploration

@@ -1,0 +1,161 @@
+#ifndef SCOUT_EXPLORATION_EXPLORATION_LOOP_H_
+#define SCOUT_EXPLORATION_EXPLORATION_LOOP_H_
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string_view>
+#include <vector>
+
+#include "scout/exploration/exploration_options.h"
+#include "scout/exploration/ground_truth.h"
+#include "scout/explore/goal_manager.h"
+#include "scout/frontier/frontier_engine.h"
+#include "scout/grid/occupancy_map.h"
+#include "scout/sim/simulated_robot.h"
+#include "scout/sim/world.h"
+#include "scout/slam/map_builder.h"
+
+namespace scout::exploration {
+
+// Why a run ended.
+enum class Termination {
+  kComplete,    // the goal manager found nothing left (and came home, if asked)
+  kMaxSimTime,  // explore.max_sim_time_s passed
+  kNoProgress,  // coverage stopped growing for explore.no_progress_timeout_s
+};
+std::string_view ToString(Termination termination);
+
+struct CoverageSample {
+  double sim_time_s = 0.0;
+  double path_length_m = 0.0;  // true distance driven so far
+  double coverage = 0.0;
+};
+
+// A goal the goal manager issued, judged against the true world.
+struct IssuedGoal {
+  double sim_time_s = 0.0;
+  Eigen::Vector2d goal_world = Eigen::Vector2d::Zero();
+  Eigen::Vector2d robot_world = Eigen::Vector2d::Zero();  // true position then
+  // False when the bare disc could not get there from where it stood.
+  bool reachable_in_truth = true;
+};
+
+struct ExplorationProgress {
+  double sim_time_s = 0.0;
+  double coverage = 0.0;
+  explore::ExploreState state = explore::ExploreState::kIdle;
+  explore::ExploreCounters counters;
+};
+
+// Wall time spent in each part of the loop, seconds (SLAM excludes the
+// frontier engine, which runs inside its event sink).
+struct LoopTimings {
+  double simulation_s = 0.0;
+  double slam_s = 0.0;
+  double frontier_s = 0.0;
+  double map_fusion_s = 0.0;  // fused map, global frontier, coverage
+  double goals_s = 0.0;       // the goal manager (planning maps, selection, A*)
+};
+
+struct ExplorationResult {
+  Termination terminated = Termination::kMaxSimTime;
+  // Mapped reachable free area / reachable free area (see GroundTruth).
+  double coverage = 0.0;
+  double mapped_free_m2 = 0.0;
+  double reachable_free_m2 = 0.0;
+  double path_length_m = 0.0;
+  double sim_time_s = 0.0;
+  // First sim time coverage reached each of kCoverageThresholds (if it did).
+  std::vector<std::optional<double>> time_to_coverage_s;
+  explore::ExploreCounters counters;
+  // Issued goals the true world makes unreachable for the robot disc.
+  int unreachable_goals = 0;
+  int collisions = 0;
+  bool returned_home = false;
+  std::vector<CoverageSample> coverage_samples;
+  std::vector<IssuedGoal> goals;
+  // True poses at every scan time (world frame); estimated poses of the SLAM
+  // nodes are MapBuilder::GetTrajectory() mapped by world_from_map.
+  std::vector<slam::TimedPose> truth;
+  LoopTimings timings;
+};
+
+// Coverage levels whose first-reach time is reported.
+inline constexpr double kCoverageThresholds[] = {0.90, 0.95, 0.99};
+
+// The closed loop in simulation: SimulatedRobot → MapBuilder (SLAM) →
+// FrontierEngine (one strategy) → fused map → GoalManager (with the robot's
+// SLAM estimate, never its true pose) → velocity commands → SimulatedRobot.
+// With synchronous SLAM the run is a deterministic function of world,
+// options and seed. Frames: SLAM's map frame is the robot's pose at t = 0;
+// world_from_map() places it in the world (only evaluation and outputs use it).
+class ExplorationLoop {
+ public:
+  using ProgressCallback = std::function<void(const ExplorationProgress&)>;
+
+  // Throws InputError on bad options, a start the robot does not fit at, or
+  // no reachable free space.
+  ExplorationLoop(const sim::World& world, const ExplorationOptions& options, uint64_t seed);
+
+  // Runs until a termination condition, then finishes SLAM (final
+  // optimisation) and measures the final map. Calls 'progress' about every
+  // 'progress_interval_s' of sim time. Call once.
+  ExplorationResult Run(const ProgressCallback& progress = {}, double progress_interval_s = 10.0);
+
+  const slam::MapBuilder& map_builder() const { return *builder_; }
+  const frontier::FrontierEngine& frontier_engine() const { return engine_; }
+  const GroundTruth& ground_truth() const { return truth_; }
+  const sim::World& world() const { return world_; }
+  // The latest fused map (map frame).
+  const grid::OccupancyMap& fused_map() const { return fused_map_; }
+  const geometry::Rigid2d& world_from_map() const { return world_from_map_; }
+  const ExplorationOptions& options() const { return options_; }
+
+ private:
+  // Feeds due sensor readings to SLAM and keeps the pose estimate current.
+  void FeedSensors();
+  void FeedSensorsUntimed();
+  // Returns the robot's SLAM estimate (map frame) at the latest odometry.
+  geometry::Rigid2d EstimatedPose() const;
+  // Rebuilds the fused map and frontier if SLAM changed them and the interval
+  // has passed; returns true if it did.
+  bool MaybeUpdateMap(bool force);
+  void MeasureCoverage();
+  void RecordIssuedGoal(const Eigen::Vector2d& goal_map);
+  std::optional<Termination> CheckTermination(const explore::ExploreStatus& status) const;
+
+  const ExplorationOptions options_;
+  sim::World world_;
+  GroundTruth truth_;
+  sim::SimulatedRobot robot_;
+  frontier::FrontierEngine engine_;
+  std::unique_ptr<slam::MapBuilder> builder_;
+  explore::GoalManager goals_;
+  geometry::Rigid2d world_from_map_;
+
+  // Pose estimate: global-from-local of the newest node, the newest matched
+  // local pose and the odometry at its scan, and the newest odometry.
+  geometry::Rigid2d global_from_local_;
+  geometry::Rigid2d last_local_;
+  geometry::Rigid2d newest_node_local_;
+  geometry::Rigid2d odometry_at_last_local_;
+  geometry::Rigid2d latest_odometry_;
+  int accepted_scans_ = 0;
+
+  bool slam_changed_ = false;
+  double last_map_update_s_ = -1e300;
+  grid::OccupancyMap fused_map_;
+  std::vector<Eigen::Vector2d> frontier_;
+  std::vector<explore::SubmapPose> submap_poses_;
+
+  ExplorationResult result_;
+  double best_coverage_ = 0.0;
+  double last_gain_s_ = 0.0;
+};
+
+}  // namespace scout::exploration
+
+#endif  // SCOUT_EXPLORATION_EXPLORATION_LOOP_H_

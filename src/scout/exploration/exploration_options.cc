@@ -1,0 +1,88 @@
+#include "scout/exploration/exploration_options.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "scout/common/error.h"
+#include "scout/frontier/update_strategy.h"
+
+namespace scout::exploration {
+namespace {
+
+void RequirePositive(double value, const std::string& key) {
+  if (!(value > 0.0) || !std::isfinite(value)) {
+    throw InputError("explore." + key + ": expected a positive finite value, got " +
+                     std::to_string(value));
+  }
+}
+
+bool IsOneOf(const std::string& name, const std::vector<std::string>& names) {
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+std::string JoinNames(const std::vector<std::string>& names) {
+  std::string joined;
+  for (const std::string& n : names) joined += (joined.empty() ? "" : ", ") + n;
+  return joined;
+}
+
+}  // namespace
+
+explore::TraversabilityOptions PlanningTraversability(const ExplorationOptions& options) {
+  explore::TraversabilityOptions t = options.explore.traversability;
+  t.robot_radius_m = options.robot.robot.radius_m;
+  return t;
+}
+
+void CheckExplorationOptions(const ExplorationOptions& options) {
+  const ExploreOptions& e = options.explore;
+  RequirePositive(e.dt_s, "dt_s");
+  RequirePositive(e.max_sim_time_s, "max_sim_time_s");
+  RequirePositive(e.no_progress_timeout_s, "no_progress_timeout_s");
+  RequirePositive(e.map_update_interval_s, "map_update_interval_s");
+  RequirePositive(e.coverage_interval_s, "coverage_interval_s");
+  if (!(e.min_coverage_gain >= 0.0 && e.min_coverage_gain < 1.0)) {
+    throw InputError("explore.min_coverage_gain: expected a value in [0, 1)");
+  }
+  if (!IsOneOf(e.strategy, frontier::StrategyNames())) {
+    throw InputError("unknown frontier strategy '" + e.strategy + "': expected one of " +
+                     JoinNames(frontier::StrategyNames()));
+  }
+  if (!IsOneOf(e.goal_policy, explore::GoalPolicyNames())) {
+    throw InputError("unknown goal policy '" + e.goal_policy + "': expected one of " +
+                     JoinNames(explore::GoalPolicyNames()));
+  }
+  sim::CheckSimulatedRobotOptions(options.robot);
+  frontier::Validate(options.frontier);
+  try {
+    explore::Validate(e.goals);
+    explore::Validate(PlanningTraversability(options));
+    explore::Validate(e.planner);
+    explore::Validate(e.follower);
+    explore::Validate(e.policy);
+    slam::Validate(options.slam);
+  } catch (const std::invalid_argument& error) {
+    throw InputError(std::string("explore: ") + error.what());
+  }
+  // The frontier detector decides which frontiers are reachable; with a
+  // smaller inflation than the planner's it offers goals no plan reaches.
+  const double planner_inflation = PlanningTraversability(options).inflation_radius_m();
+  if (options.frontier.inflation_radius_m + 1e-9 < planner_inflation) {
+    throw InputError("contradictory options: frontier.inflation_radius_m (" +
+                     std::to_string(options.frontier.inflation_radius_m) +
+                     ") is smaller than robot.radius_m + explore.traversability.safety_margin_m (" +
+                     std::to_string(planner_inflation) + ")");
+  }
+  if (e.follower.max_linear_speed_mps > options.robot.robot.max_linear_speed_mps + 1e-9 ||
+      e.follower.max_angular_speed_radps > options.robot.robot.max_angular_speed_radps + 1e-9) {
+    throw InputError(
+        "contradictory options: explore.follower speeds exceed robot.max_linear_speed_mps / "
+        "robot.max_angular_speed_radps");
+  }
+  if (options.start && !options.start->allFinite()) {
+    throw InputError("--start: expected finite coordinates");
+  }
+}
+
+}  // namespace scout::exploration

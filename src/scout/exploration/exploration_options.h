@@ -1,0 +1,78 @@
+#ifndef SCOUT_EXPLORATION_EXPLORATION_OPTIONS_H_
+#define SCOUT_EXPLORATION_EXPLORATION_OPTIONS_H_
+
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+
+#include "scout/explore/goal_manager.h"
+#include "scout/explore/goal_policies.h"
+#include "scout/explore/path_follower.h"
+#include "scout/explore/path_planner.h"
+#include "scout/explore/planning_map.h"
+#include "scout/frontier/frontier_options.h"
+#include "scout/sim/simulated_robot.h"
+#include "scout/slam/map_builder.h"
+
+namespace scout::exploration {
+
+// The "explore" section of the options file: the closed loop and the goal
+// side of exploration (the robot, SLAM and frontier have their own sections).
+struct ExploreOptions {
+  // Simulation and control step. 0.05 s divides the 10 Hz scan and 50 Hz
+  // odometry periods, so sensor stamps stay exact multiples of it.
+  double dt_s = 0.05;
+  // A run ends "max_sim_time" after this much simulated time ...
+  double max_sim_time_s = 3600.0;
+  // ... or "no_progress" when coverage has not grown by min_coverage_gain
+  // for this long (a robot that cannot finish must still stop by itself).
+  double no_progress_timeout_s = 300.0;
+  double min_coverage_gain = 0.001;
+  // The fused global map is rebuilt only when SLAM changed it, and at most
+  // this often (fusing and re-inflating the whole map is the loop's dearest
+  // step; the robot covers 0.5 m per second at most).
+  double map_update_interval_s = 1.0;
+  // Coverage is measured (and a coverage.csv row recorded) this often.
+  double coverage_interval_s = 2.0;
+  // The frontier update strategy that feeds the goals (exact, direct, bfs,
+  // dfd, full) and the goal policy (scout, nearest, explore-lite,
+  // meanshift-centres).
+  std::string strategy = "exact";
+  std::string goal_policy = "scout";
+  // Also run "full" and score the strategy against it every round (costly).
+  bool evaluate_frontier = false;
+  // Run global SLAM in the loop's thread: the run is then a deterministic
+  // function of world, options and seed. Overrides slam.pose_graph.synchronous.
+  bool synchronous_slam = true;
+
+  explore::GoalManagerOptions goals;
+  // robot_radius_m is taken from the robot section (robot.radius_m).
+  explore::TraversabilityOptions traversability;
+  explore::PathPlannerOptions planner;
+  explore::PathFollowerOptions follower;
+  explore::GoalPolicyOptions policy;
+};
+
+// Everything one exploration run needs.
+struct ExplorationOptions {
+  ExploreOptions explore;
+  sim::SimulatedRobotOptions robot;
+  slam::SlamOptions slam;
+  frontier::FrontierOptions frontier;
+  // Overrides the world's start position (world frame, metres).
+  std::optional<Eigen::Vector2d> start;
+};
+
+// Throws InputError naming the key ("explore.dt_s") of a bad or contradictory
+// option: out-of-range values, an unknown strategy or goal policy, a frontier
+// inflation smaller than the planner's (frontier points the planner could not
+// reach), follower speeds above the robot's limits.
+void CheckExplorationOptions(const ExplorationOptions& options);
+
+// Returns the traversability the goal manager plans with: the explore
+// section's, with the robot's radius.
+explore::TraversabilityOptions PlanningTraversability(const ExplorationOptions& options);
+
+}  // namespace scout::exploration
+
+#endif  // SCOUT_EXPLORATION_EXPLORATION_OPTIONS_H_

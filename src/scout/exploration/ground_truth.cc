@@ -1,0 +1,128 @@
+#include "scout/exploration/ground_truth.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "scout/common/error.h"
+#include "scout/explore/path_distance_field.h"
+#include "scout/grid/distance_transform.h"
+
+namespace scout::exploration {
+namespace {
+
+std::string Format(const Eigen::Vector2d& p) {
+  std::ostringstream s;
+  s.precision(3);
+  s << std::fixed << p.x() << "," << p.y();
+  return s.str();
+}
+
+}  // namespace
+
+GroundTruth::GroundTruth(const grid::OccupancyMap& world, const std::string& world_name,
+                         const Eigen::Vector2d& start,
+                         const explore::TraversabilityOptions& traversability,
+                         double robot_radius_m)
+    : limits_(world.limits), cell_area_m2_(world.limits.resolution() * world.limits.resolution()) {
+  explore::TraversabilityOptions bare_options = traversability;
+  bare_options.robot_radius_m = robot_radius_m;
+  bare_options.safety_margin_m = 0.0;
+  bare_options.unknown_traversable = false;
+  const explore::PlanningMap bare(world, bare_options);
+  const grid::CellIndex start_cell = limits_.CellContaining(start);
+  if (!bare.Traversable(start_cell)) {
+    throw InputError("world '" + world_name + "': the start (" + Format(start) +
+                     ") is inside an obstacle, unknown space or too close to a wall for the "
+                     "robot (radius " +
+                     std::to_string(robot_radius_m) +
+                     " m); choose a free position with --start X,Y");
+  }
+  LabelDiscComponents(bare);
+
+  const explore::PlanningMap inflated(world, traversability);
+  const explore::PathDistanceField from_start(inflated, start);
+  std::vector<uint8_t> centre_reachable(limits_.num_cells(), 0);
+  bool any = false;
+  for (int64_t i = 0; i < limits_.num_cells(); ++i) {
+    if (std::isfinite(from_start.at(i))) centre_reachable[i] = 1, any = true;
+  }
+  if (!any) {
+    throw InputError("world '" + world_name + "': no free space is reachable from the start (" +
+                     Format(start) + ") for the robot with its safety margin (" +
+                     std::to_string(traversability.inflation_radius_m()) +
+                     " m from walls); choose another position with --start X,Y");
+  }
+  // The disc covers every cell within its radius of a reachable centre.
+  const std::vector<float> d2 =
+      grid::SquaredDistanceToNearestSite(centre_reachable, limits_.width(), limits_.height());
+  const double r_cells = robot_radius_m / limits_.resolution();
+  for (int64_t i = 0; i < limits_.num_cells(); ++i) {
+    if (world.cells[i] == grid::CellState::kFree && d2[i] <= r_cells * r_cells + 1e-6) {
+      reachable_.push_back(i);
+    }
+  }
+}
+
+void GroundTruth::LabelDiscComponents(const explore::PlanningMap& bare) {
+  disc_component_.assign(limits_.num_cells(), 0);
+  int32_t label = 0;
+  std::vector<int64_t> stack;
+  for (int64_t seed = 0; seed < limits_.num_cells(); ++seed) {
+    if (disc_component_[seed] != 0 || !bare.traversable(seed)) continue;
+    disc_component_[seed] = ++label;
+    stack.assign(1, seed);
+    while (!stack.empty()) {
+      const grid::CellIndex c = limits_.CellOfFlatIndex(stack.back());
+      stack.pop_back();
+      for (int k = 0; k < 4; ++k) {
+        const grid::CellIndex n{c.x + explore::kNeighbourOffsets[k][0],
+                                c.y + explore::kNeighbourOffsets[k][1]};
+        if (!bare.Traversable(n)) continue;
+        const int64_t flat = limits_.FlatIndex(n);
+        if (disc_component_[flat] != 0) continue;
+        disc_component_[flat] = label;
+        stack.push_back(flat);
+      }
+    }
+  }
+}
+
+double GroundTruth::MappedFreeM2(const grid::OccupancyMap& map,
+                                 const geometry::Rigid2d& world_from_map) const {
+  if (map.limits.num_cells() == 0) return 0.0;
+  const geometry::Rigid2d map_from_world = world_from_map.inverse();
+  int64_t mapped = 0;
+  for (const int64_t flat : reachable_) {
+    const Eigen::Vector2d p = map_from_world * limits_.CellCenter(limits_.CellOfFlatIndex(flat));
+    mapped += map.at(map.limits.CellContaining(p)) == grid::CellState::kFree;
+  }
+  return mapped * cell_area_m2_;
+}
+
+bool GroundTruth::DiscCanReach(const Eigen::Vector2d& from, const Eigen::Vector2d& goal,
+                               double tolerance_m) const {
+  // The robot's true centre is collision-free but may sit a hair inside the
+  // band the grid blocks (cell centres vs the exact disc): accept the
+  // components of cells within half a cell of it.
+  std::vector<int32_t> robot_labels;
+  for (const grid::CellIndex& c :
+       explore::CellsWithin(limits_, from, 0.75 * limits_.resolution())) {
+    const int32_t label = disc_component_[limits_.FlatIndex(c)];
+    if (label != 0) robot_labels.push_back(label);
+  }
+  for (const grid::CellIndex& c : explore::CellsWithin(limits_, goal, tolerance_m)) {
+    const int32_t label = disc_component_[limits_.FlatIndex(c)];
+    for (const int32_t r : robot_labels) {
+      if (label == r) return true;
+    }
+  }
+  return false;
+}
+
+std::vector<uint8_t> GroundTruth::ReachableMask() const {
+  std::vector<uint8_t> mask(limits_.num_cells(), 0);
+  for (const int64_t flat : reachable_) mask[flat] = 1;
+  return mask;
+}
+
+}  // namespace scout::exploration

@@ -1,0 +1,62 @@
+#ifndef SCOUT_EXPLORATION_GROUND_TRUTH_H_
+#define SCOUT_EXPLORATION_GROUND_TRUTH_H_
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <vector>
+
+#include "scout/explore/planning_map.h"
+#include "scout/geometry/rigid_transform.h"
+#include "scout/grid/occupancy_map.h"
+
+namespace scout::exploration {
+
+// Evaluation against the TRUE world (the simulator's map), which the robot
+// never sees: how much of what it could explore is mapped, and whether a goal
+// could be reached at all.
+//
+// Reachable free area: the robot's centre may go wherever the explorer's own
+// traversability allows (robot radius + safety margin from walls, unknown
+// space excluded) starting from the start; every free cell its disc covers
+// from there counts. Space behind gaps narrower than the inflated robot is
+// excluded on purpose: Scout does not drive through them (ALGORITHMS §2), so
+// counting it would only measure the world, not the exploration.
+class GroundTruth {
+ public:
+  // 'traversability' is the explorer's; 'robot_radius_m' the bare disc.
+  // Throws InputError naming the world when the start is not a free position
+  // for the disc (suggesting --start X,Y) or nothing is reachable from it.
+  GroundTruth(const grid::OccupancyMap& world, const std::string& world_name,
+              const Eigen::Vector2d& start, const explore::TraversabilityOptions& traversability,
+              double robot_radius_m);
+
+  // Returns the reachable free area in m².
+  double reachable_free_m2() const { return reachable_.size() * cell_area_m2_; }
+  // Returns the reachable free area (m²) that 'map' shows as free, where
+  // 'world_from_map' places the map in the world frame.
+  double MappedFreeM2(const grid::OccupancyMap& map, const geometry::Rigid2d& world_from_map) const;
+
+  // True when the bare disc can drive from 'from' to within 'tolerance_m' of
+  // 'goal' in the true world (world frame). Unknown space is not traversable.
+  bool DiscCanReach(const Eigen::Vector2d& from, const Eigen::Vector2d& goal,
+                    double tolerance_m) const;
+
+  const grid::MapLimits& limits() const { return limits_; }
+  // Row-major mask of the reachable free cells.
+  std::vector<uint8_t> ReachableMask() const;
+
+ private:
+  // Labels of the 4-connected components of cells the bare disc's centre may
+  // occupy (0: none). 4-connectivity equals the planner's 8-connected step
+  // rule, which forbids cutting blocked corners.
+  void LabelDiscComponents(const explore::PlanningMap& bare);
+
+  grid::MapLimits limits_;
+  double cell_area_m2_ = 0.0;
+  std::vector<int64_t> reachable_;  // flat indices of reachable free cells
+  std::vector<int32_t> disc_component_;
+};
+
+}  // namespace scout::exploration
+
+#endif  // SCOUT_EXPLORATION_GROUND_TRUTH_H_

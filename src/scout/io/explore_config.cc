@@ -1,0 +1,160 @@
+#include "scout/io/explore_config.h"
+
+#include <numbers>
+#include <stdexcept>
+
+#include "scout/common/error.h"
+
+namespace scout::io {
+namespace {
+
+constexpr double kRadPerDeg = std::numbers::pi / 180.0;
+
+void ReadGoals(YamlSection s, explore::GoalManagerOptions* o) {
+  s.ReadPositive("progress_timeout_s", &o->progress_timeout_s);
+  s.ReadNonNegative("progress_min_m", &o->progress_min_m);
+  s.ReadNonNegative("replan_interval_s", &o->replan_interval_s);
+  s.ReadInt("max_plan_attempts", &o->max_plan_attempts, 1);
+  s.ReadNonNegative("finish_after_empty_s", &o->finish_after_empty_s);
+  s.ReadBool("return_to_start", &o->return_to_start);
+  {
+    YamlSection f = s.Section("failed_goals");
+    f.ReadNonNegative("blacklist_radius_m", &o->failed_goals.blacklist_radius_m);
+    f.ReadPositive("retry_radius_m", &o->failed_goals.retry_radius_m);
+    f.ReadNonNegative("retry_known_area_change_m2", &o->failed_goals.retry_known_area_change_m2);
+    f.ReadInt("max_failures", &o->failed_goals.max_failures, 0);
+    f.RejectUnknownKeys();
+  }
+  s.RejectUnknownKeys();
+}
+
+void ReadFollower(YamlSection s, explore::PathFollowerOptions* o) {
+  s.ReadPositive("lookahead_m", &o->lookahead_m);
+  s.ReadPositive("max_linear_speed_mps", &o->max_linear_speed_mps);
+  s.ReadPositive("max_angular_speed_radps", &o->max_angular_speed_radps);
+  double heading_deg = o->rotate_in_place_heading_rad / kRadPerDeg;
+  s.ReadPositive("rotate_in_place_heading_deg", &heading_deg);
+  o->rotate_in_place_heading_rad = heading_deg * kRadPerDeg;
+  s.ReadPositive("rotate_gain_per_s", &o->rotate_gain_per_s);
+  s.ReadPositive("goal_tolerance_m", &o->goal_tolerance_m);
+  s.ReadPositive("slow_down_distance_m", &o->slow_down_distance_m);
+  s.ReadNonNegative("min_linear_speed_mps", &o->min_linear_speed_mps);
+  s.RejectUnknownKeys();
+}
+
+void ReadPolicy(YamlSection s, explore::GoalPolicyOptions* o) {
+  {
+    YamlSection n = s.Section("navigation");
+    explore::NavigationPointOptions& v = o->navigation;
+    n.ReadPositive("bandwidth_m", &v.mean_shift.bandwidth_m);
+    n.ReadNonNegative("seed_bin_m", &v.mean_shift.seed_bin_m);
+    n.ReadPositive("convergence_m", &v.mean_shift.convergence_m);
+    n.ReadInt("max_iterations", &v.mean_shift.max_iterations, 1);
+    n.ReadNonNegative("connectivity_margin_m", &v.connectivity_margin_m);
+    n.ReadPositive("info_radius_m", &v.info_radius_m);
+    n.ReadBool("outside_map_is_unknown", &v.outside_map_is_unknown);
+    n.ReadNonNegative("info_multiplier", &v.info_multiplier);
+    n.ReadNonNegative("hysteresis_radius_m", &v.hysteresis_radius_m);
+    n.ReadPositive("hysteresis_gain", &v.hysteresis_gain);
+    n.RejectUnknownKeys();
+  }
+  {
+    YamlSection l = s.Section("explore_lite");
+    l.ReadNonNegative("potential_scale", &o->explore_lite.potential_scale);
+    l.ReadNonNegative("gain_scale", &o->explore_lite.gain_scale);
+    l.ReadNonNegative("min_frontier_size_m", &o->explore_lite.min_frontier_size_m);
+    l.RejectUnknownKeys();
+  }
+  s.RejectUnknownKeys();
+}
+
+// Converts a module's std::invalid_argument into an InputError naming the file
+// and the section the key belongs to.
+template <typename Options>
+void Check(const Options& options, const std::string& file, const std::string& section) {
+  try {
+    explore::Validate(options);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(file + ": " + section + ": " + e.what());
+  }
+}
+
+}  // namespace
+
+void ReadExploreOptions(YamlSection s, exploration::ExploreOptions* o) {
+  s.ReadPositive("dt_s", &o->dt_s);
+  s.ReadPositive("max_sim_time_s", &o->max_sim_time_s);
+  s.ReadPositive("no_progress_timeout_s", &o->no_progress_timeout_s);
+  s.ReadNonNegative("min_coverage_gain", &o->min_coverage_gain);
+  s.ReadPositive("map_update_interval_s", &o->map_update_interval_s);
+  s.ReadPositive("coverage_interval_s", &o->coverage_interval_s);
+  s.ReadBool("evaluate_frontier", &o->evaluate_frontier);
+  s.ReadBool("synchronous_slam", &o->synchronous_slam);
+  ReadGoals(s.Section("goals"), &o->goals);
+  {
+    YamlSection t = s.Section("traversability");
+    t.ReadNonNegative("safety_margin_m", &o->traversability.safety_margin_m);
+    t.ReadBool("unknown_traversable", &o->traversability.unknown_traversable);
+    t.ReadNonNegative("goal_snap_radius_m", &o->traversability.goal_snap_radius_m);
+    t.RejectUnknownKeys();
+  }
+  {
+    YamlSection p = s.Section("planner");
+    p.ReadNonNegative("clearance_weight", &o->planner.clearance_weight);
+    p.ReadPositive("clearance_band_m", &o->planner.clearance_band_m);
+    p.ReadBool("shortcut", &o->planner.shortcut);
+    p.RejectUnknownKeys();
+  }
+  ReadFollower(s.Section("follower"), &o->follower);
+  ReadPolicy(s.Section("policy"), &o->policy);
+  s.RejectUnknownKeys();
+}
+
+void ReadRobotOptions(YamlSection s, sim::SimulatedRobotOptions* o) {
+  s.ReadPositive("radius_m", &o->robot.radius_m);
+  s.ReadPositive("max_linear_speed_mps", &o->robot.max_linear_speed_mps);
+  s.ReadPositive("max_angular_speed_radps", &o->robot.max_angular_speed_radps);
+  s.ReadPositive("max_linear_accel_mps2", &o->robot.max_linear_accel_mps2);
+  s.ReadPositive("max_angular_accel_radps2", &o->robot.max_angular_accel_radps2);
+  s.ReadPositive("collision_substep_cells", &o->robot.collision_substep_cells);
+  s.ReadPositive("scan_rate_hz", &o->scan_rate_hz);
+  s.ReadPositive("odometry_rate_hz", &o->odometry_rate_hz);
+  double heading_deg = o->start_heading_rad / kRadPerDeg;
+  s.ReadDouble("start_heading_deg", &heading_deg);
+  o->start_heading_rad = heading_deg * kRadPerDeg;
+  {
+    YamlSection l = s.Section("lidar");
+    l.ReadPositive("range_max_m", &o->lidar.range_max_m);
+    l.ReadNonNegative("range_min_m", &o->lidar.range_min_m);
+    l.ReadPositive("fov_deg", &o->lidar.fov_deg);
+    l.ReadInt("beams", &o->lidar.beams, 2);
+    l.ReadNonNegative("range_noise_stddev_m", &o->lidar.range_noise_stddev_m);
+    l.ReadNonNegative("dropout_probability", &o->lidar.dropout_probability);
+    l.RejectUnknownKeys();
+  }
+  {
+    YamlSection d = s.Section("odometry");
+    d.ReadNonNegative("trans_per_trans", &o->odometry.trans_per_trans);
+    d.ReadNonNegative("trans_per_rot", &o->odometry.trans_per_rot);
+    d.ReadNonNegative("rot_per_rot", &o->odometry.rot_per_rot);
+    d.ReadNonNegative("rot_per_trans", &o->odometry.rot_per_trans);
+    d.RejectUnknownKeys();
+  }
+  s.RejectUnknownKeys();
+}
+
+void ValidateExploreAndRobot(const exploration::ExploreOptions& explore,
+                             const sim::SimulatedRobotOptions& robot, const std::string& file) {
+  try {
+    sim::CheckSimulatedRobotOptions(robot);
+  } catch (const InputError& e) {
+    throw InputError(file + ": " + e.what());
+  }
+  Check(explore.goals, file, "explore.goals");
+  Check(explore.traversability, file, "explore.traversability");
+  Check(explore.planner, file, "explore.planner");
+  Check(explore.follower, file, "explore.follower");
+  Check(explore.policy, file, "explore.policy");
+}
+
+}  // namespace scout::io
