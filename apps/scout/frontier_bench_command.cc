@@ -69,6 +69,7 @@ int RunFrontierBench(const FrontierBenchArgs& args) {
     }
   });
   if (terminal) std::cerr << "\n";
+  engine.Flush();
 
   nlohmann::json summary;
   summary["world"] = args.world;
@@ -81,6 +82,7 @@ int RunFrontierBench(const FrontierBenchArgs& args) {
   summary["loop_closures"] = stats.loop_closures;
   summary["trajectory_length_m"] = stats.trajectory_length_m;
   summary["grid_changes"] = engine.grid_changes();
+  summary["grid_change_events"] = engine.grid_change_events();
   summary["epsilon_m"] = config.frontier.epsilon_m;
   // Shared by all strategies: answer maps and local frontier extraction per grid change.
   summary["submap_update_ms"] = engine.catalog_time_ms();

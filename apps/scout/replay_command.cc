@@ -153,6 +153,7 @@ int RunReplay(const ReplayArgs& args) {
   }
   if (terminal) std::cerr << "\n";
   builder.Finish();
+  engine.Flush();
   const double wall_time_s = wall.ElapsedUs() * 1e-6;
 
   const std::vector<slam::TimedPose> nodes = builder.GetTrajectory();
@@ -192,6 +193,7 @@ int RunReplay(const ReplayArgs& args) {
     summary["reference"]["file"] = args.reference;
   }
   summary["grid_changes"] = engine.grid_changes();
+  summary["grid_change_events"] = engine.grid_change_events();
   summary["submap_update_ms"] = engine.catalog_time_ms();
   summary["frontier"] = io::FrontierSummary(engine);
 

@@ -58,17 +58,23 @@ const std::vector<int>& FrontierEngine::LastRoundSubmaps(const std::string& name
 
 void FrontierEngine::Apply(const events::SubmapEvent& event) {
   if (const auto* changed = std::get_if<events::SubmapChanged>(&event)) {
-    const Stopwatch stopwatch;
-    const SubmapChange change = catalog_.Apply(*changed);
-    catalog_time_ms_ += stopwatch.ElapsedUs() * 1e-3;
-    ++grid_changes_;
-    for (size_t s = 0; s < strategies_.size(); ++s) {
-      const UpdateCost cost = strategies_[s]->OnSubmapChanged(change);
-      grid_change_points_[s] += cost.queried_points;
-      grid_change_time_us_[s] += cost.time_us;
+    ++grid_change_events_;
+    if (!catalog_.options().defer_grid_changes) {
+      ApplyChange(*changed);
+      return;
     }
+    // Ids are dense: a change names a known submap or the next new one. Checked
+    // now, so a bad stream fails at the event that is wrong.
+    const int next_id =
+        std::max(catalog_.size(), pending_.empty() ? 0 : pending_.rbegin()->first + 1);
+    if (changed->id < 0 || changed->id > next_id) {
+      throw InputError("submap event: submap id " + std::to_string(changed->id) +
+                       " is neither known nor the next one (" + std::to_string(next_id) + ")");
+    }
+    pending_.insert_or_assign(changed->id, *changed);
     return;
   }
+  Flush();
   const auto& optimized = std::get<events::Optimized>(event);
   const std::vector<geometry::Rigid2d> previous = catalog_.Apply(optimized);
   std::vector<StrategyRound> round(strategies_.size());
@@ -89,6 +95,25 @@ void FrontierEngine::Apply(const events::SubmapEvent& event) {
     rounds_.push_back(std::move(r));
   }
   ++optimizations_;
+}
+
+void FrontierEngine::Flush() {
+  // Ascending ids: a new submap always follows the ones before it.
+  std::map<int, events::SubmapChanged> pending;
+  pending.swap(pending_);
+  for (const auto& [id, changed] : pending) ApplyChange(changed);
+}
+
+void FrontierEngine::ApplyChange(const events::SubmapChanged& changed) {
+  const Stopwatch stopwatch;
+  const SubmapChange change = catalog_.Apply(changed);
+  catalog_time_ms_ += stopwatch.ElapsedUs() * 1e-3;
+  ++grid_changes_;
+  for (size_t s = 0; s < strategies_.size(); ++s) {
+    const UpdateCost cost = strategies_[s]->OnSubmapChanged(change);
+    grid_change_points_[s] += cost.queried_points;
+    grid_change_time_us_[s] += cost.time_us;
+  }
 }
 
 Confusion FrontierEngine::Compare(const UpdateStrategy& s, const UpdateStrategy& truth) const {

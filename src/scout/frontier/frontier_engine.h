@@ -2,6 +2,7 @@
 #define SCOUT_FRONTIER_FRONTIER_ENGINE_H_
 
 #include <Eigen/Core>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -63,8 +64,16 @@ class FrontierEngine {
   FrontierEngine(const FrontierOptions& options, const std::vector<std::string>& strategies,
                  bool evaluate);
 
-  // Applies one event to the catalog, then to every strategy.
+  // Applies one event to the catalog, then to every strategy. With
+  // FrontierOptions::defer_grid_changes, a SubmapChanged is only recorded
+  // (replacing an older pending grid of the same submap) and applied by the
+  // next Optimized event or Flush(). Throws InputError for a submap id that
+  // is neither known nor the next one.
   void Apply(const events::SubmapEvent& event);
+  // Applies every pending grid change, in submap id order. The accessors
+  // below reflect the events up to the last Flush() or Optimized event.
+  void Flush();
+  bool has_pending_changes() const { return !pending_.empty(); }
 
   const SubmapCatalog& catalog() const { return catalog_; }
   const std::vector<std::string>& strategy_names() const { return names_; }
@@ -76,7 +85,9 @@ class FrontierEngine {
   const std::vector<int>& LastRoundSubmaps(const std::string& name) const;
 
   int optimizations() const { return optimizations_; }
+  // Grid changes applied to the catalog (after deferral), and received.
   int grid_changes() const { return grid_changes_; }
+  int grid_change_events() const { return grid_change_events_; }
   const std::vector<StrategyRound>& rounds() const { return rounds_; }
   // Totals per strategy, in the order of strategy_names().
   std::vector<StrategyTotals> Totals() const;
@@ -86,6 +97,7 @@ class FrontierEngine {
  private:
   int IndexOf(const std::string& name) const;
   Confusion Compare(const UpdateStrategy& s, const UpdateStrategy& truth) const;
+  void ApplyChange(const events::SubmapChanged& changed);
 
   SubmapCatalog catalog_;
   std::vector<std::string> names_;
@@ -97,6 +109,9 @@ class FrontierEngine {
   std::vector<double> grid_change_time_us_;
   int optimizations_ = 0;
   int grid_changes_ = 0;
+  int grid_change_events_ = 0;
+  // Deferred grid changes by submap id (the newest event of each submap).
+  std::map<int, events::SubmapChanged> pending_;
   double catalog_time_ms_ = 0.0;
 };
 

@@ -17,6 +17,13 @@ struct FrontierOptions {
   // relative pose moved any point by this much since the last anchoring.
   // Larger values keep more per-point margins in memory and re-anchor less.
   double exact_slack_m = 0.5;
+  // Grid changes (one per scan insertion) are held, and only the newest grid
+  // of each changed submap is processed when the frontier is next needed (an
+  // optimisation event, or FrontierEngine::Flush()). Local frontier extraction
+  // then runs once per batch instead of once per scan, and the result at every
+  // flush is the same as processing each change. false processes every change
+  // as it arrives.
+  bool defer_grid_changes = true;
 };
 
 // Throws scout::InputError naming the field when an option is out of range.

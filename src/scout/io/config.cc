@@ -17,6 +17,7 @@ void ReadFrontier(YamlSection s, frontier::FrontierOptions* o) {
   s.ReadPositive("epsilon_m", &o->epsilon_m);
   s.ReadPositive("lidar_range_m", &o->lidar_range_m);
   s.ReadPositive("exact_slack_m", &o->exact_slack_m);
+  s.ReadBool("defer_grid_changes", &o->defer_grid_changes);
   s.RejectUnknownKeys();
 }
 
