@@ -14,6 +14,9 @@ ExplorationOptions Prepared(const ExplorationOptions& options) {
   CheckExplorationOptions(options);
   ExplorationOptions o = options;
   if (o.explore.synchronous_slam) o.slam.pose_graph.synchronous = true;
+  if (o.explore.slam_events_every_n_insertions > 0) {
+    o.slam.submap_event_every_n_insertions = o.explore.slam_events_every_n_insertions;
+  }
   return o;
 }
 
@@ -125,6 +128,9 @@ bool ExplorationLoop::MaybeUpdateMap(bool force) {
     submap_poses_.push_back({static_cast<int>(i), submaps[i].global_pose});
   }
   fused_map_ = grid::FuseSubmaps(placed, options_.slam.local.submaps.resolution_m);
+  // Grid changes are deferred by the engine (FrontierOptions::
+  // defer_grid_changes); apply them now that the frontier is needed.
+  engine_.Flush();
   frontier_ = engine_.GlobalFrontier(options_.explore.strategy);
   MeasureCoverage();
   result_.timings.map_fusion_s += watch.ElapsedUs() * 1e-6;
@@ -171,15 +177,29 @@ std::optional<Termination> ExplorationLoop::CheckTermination(
 ExplorationResult ExplorationLoop::Run(const ProgressCallback& progress,
                                        double progress_interval_s) {
   const ExploreOptions& e = options_.explore;
-  goals_.Start();
   FeedSensors();  // the readings of t = 0
   double next_sample_s = 0.0;
   double next_progress_s = 0.0;
+  double turned_rad = 0.0;
+  double last_heading_rad = EstimatedPose().theta();
+  bool started = false;
   while (true) {
     const double t = robot_.sim_time_s();
-    const bool changed = MaybeUpdateMap(/*force=*/fused_map_.limits.num_cells() == 0);
+    bool changed = MaybeUpdateMap(/*force=*/fused_map_.limits.num_cells() == 0);
     explore::ExploreStatus status;
-    if (fused_map_.limits.num_cells() > 0) {
+    const double heading_rad = EstimatedPose().theta();
+    turned_rad += std::abs(geometry::NormalizeAngle(heading_rad - last_heading_rad));
+    last_heading_rad = heading_rad;
+    if (!started && turned_rad < e.initial_turn_rad) {
+      status.state = explore::ExploreState::kPlanning;
+      status.command.angular_radps = e.follower.max_angular_speed_radps;
+    } else if (!started) {
+      // The goals see the map of the whole turn, so refresh it now.
+      started = true;
+      goals_.Start();
+      changed = MaybeUpdateMap(/*force=*/true);
+    }
+    if (started && fused_map_.limits.num_cells() > 0) {
       const int issued_before = goals_.counters().goals_issued;
       explore::ExploreInput in;
       in.time_s = t;
