@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 #include "scout/common/atomic_file.h"
@@ -47,6 +48,64 @@ TEST_F(ConfigTest, DefaultFileMatchesTheBuiltInDefaults) {
   EXPECT_DOUBLE_EQ(c.synthetic.lidar.range_max_m, d.synthetic.lidar.range_max_m);
   EXPECT_DOUBLE_EQ(c.synthetic.corrections.newest_jitter_m,
                    d.synthetic.corrections.newest_jitter_m);
+}
+
+TEST_F(ConfigTest, SlamSectionOfTheDefaultFileMatchesTheBuiltInDefaults) {
+  const slam::SlamOptions c =
+      LoadConfig(fs::path(SCOUT_SOURCE_DIR) / "config" / "default.yaml").slam;
+  const slam::SlamOptions d;
+  EXPECT_EQ(c.submap_event_every_n_insertions, d.submap_event_every_n_insertions);
+  EXPECT_DOUBLE_EQ(c.local.range_filter.max_range_m, d.local.range_filter.max_range_m);
+  EXPECT_DOUBLE_EQ(c.local.range_filter.miss_ray_length_m, d.local.range_filter.miss_ray_length_m);
+  EXPECT_DOUBLE_EQ(c.local.voxel_filter_size_m, d.local.voxel_filter_size_m);
+  EXPECT_EQ(c.local.adaptive_voxel_filter.min_num_points,
+            d.local.adaptive_voxel_filter.min_num_points);
+  EXPECT_EQ(c.local.use_online_correlative_scan_matching,
+            d.local.use_online_correlative_scan_matching);
+  EXPECT_NEAR(c.local.real_time_correlative_scan_matcher.angular_search_window_rad,
+              d.local.real_time_correlative_scan_matcher.angular_search_window_rad, 1e-12);
+  EXPECT_DOUBLE_EQ(c.local.ceres_scan_matcher.occupied_space_weight,
+                   d.local.ceres_scan_matcher.occupied_space_weight);
+  EXPECT_DOUBLE_EQ(c.local.ceres_scan_matcher.translation_weight,
+                   d.local.ceres_scan_matcher.translation_weight);
+  EXPECT_DOUBLE_EQ(c.local.ceres_scan_matcher.rotation_weight,
+                   d.local.ceres_scan_matcher.rotation_weight);
+  EXPECT_NEAR(c.local.motion_filter.max_angle_rad, d.local.motion_filter.max_angle_rad, 1e-12);
+  EXPECT_DOUBLE_EQ(c.local.motion_filter.max_distance_m, d.local.motion_filter.max_distance_m);
+  EXPECT_EQ(c.local.submaps.num_range_data, d.local.submaps.num_range_data);
+  EXPECT_DOUBLE_EQ(c.local.submaps.resolution_m, d.local.submaps.resolution_m);
+  EXPECT_EQ(c.pose_graph.optimize_every_n_nodes, d.pose_graph.optimize_every_n_nodes);
+  EXPECT_EQ(c.pose_graph.synchronous, d.pose_graph.synchronous);
+  EXPECT_DOUBLE_EQ(c.pose_graph.intra_submap_translation_weight,
+                   d.pose_graph.intra_submap_translation_weight);
+  EXPECT_DOUBLE_EQ(c.pose_graph.constraint_builder.sampling_ratio,
+                   d.pose_graph.constraint_builder.sampling_ratio);
+  EXPECT_DOUBLE_EQ(c.pose_graph.constraint_builder.min_score,
+                   d.pose_graph.constraint_builder.min_score);
+  EXPECT_DOUBLE_EQ(c.pose_graph.constraint_builder.loop_closure_translation_weight,
+                   d.pose_graph.constraint_builder.loop_closure_translation_weight);
+  EXPECT_EQ(c.pose_graph.constraint_builder.fast_correlative_scan_matcher.branch_and_bound_depth,
+            d.pose_graph.constraint_builder.fast_correlative_scan_matcher.branch_and_bound_depth);
+  EXPECT_DOUBLE_EQ(c.pose_graph.constraint_builder.ceres_scan_matcher.occupied_space_weight,
+                   d.pose_graph.constraint_builder.ceres_scan_matcher.occupied_space_weight);
+  EXPECT_DOUBLE_EQ(c.pose_graph.optimization_problem.huber_scale,
+                   d.pose_graph.optimization_problem.huber_scale);
+  EXPECT_EQ(c.pose_graph.optimization_problem.max_num_iterations,
+            d.pose_graph.optimization_problem.max_num_iterations);
+}
+
+TEST_F(ConfigTest, SlamValuesOverrideDefaultsAndErrorsNameTheKey) {
+  const ScoutConfig c =
+      LoadConfig(Write("slam:\n  local:\n    submaps:\n      num_range_data: 150\n"
+                       "    motion_filter:\n      max_angle_deg: 2\n"));
+  EXPECT_EQ(c.slam.local.submaps.num_range_data, 150);
+  EXPECT_NEAR(c.slam.local.motion_filter.max_angle_rad, 2.0 * M_PI / 180.0, 1e-12);
+  std::string e = ErrorOf("slam:\n  pose_graph:\n    constraint_builder:\n      min_scor: 0.6\n");
+  EXPECT_NE(e.find("slam.pose_graph.constraint_builder.min_scor"), std::string::npos) << e;
+  // Out-of-range values caught by the module's own validation still name the file.
+  e = ErrorOf("slam:\n  local:\n    submaps:\n      hit_probability: 0.4\n");
+  EXPECT_NE(e.find("options.yaml"), std::string::npos) << e;
+  EXPECT_NE(e.find("hit"), std::string::npos) << e;
 }
 
 TEST_F(ConfigTest, ValuesOverrideDefaults) {
