@@ -14,9 +14,6 @@ ExplorationOptions Prepared(const ExplorationOptions& options) {
   CheckExplorationOptions(options);
   ExplorationOptions o = options;
   if (o.explore.synchronous_slam) o.slam.pose_graph.synchronous = true;
-  if (o.explore.slam_events_every_n_insertions > 0) {
-    o.slam.submap_event_every_n_insertions = o.explore.slam_events_every_n_insertions;
-  }
   return o;
 }
 

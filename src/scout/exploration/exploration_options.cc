@@ -42,6 +42,9 @@ void CheckExplorationOptions(const ExplorationOptions& options) {
   RequirePositive(e.no_progress_timeout_s, "no_progress_timeout_s");
   RequirePositive(e.map_update_interval_s, "map_update_interval_s");
   RequirePositive(e.coverage_interval_s, "coverage_interval_s");
+  if (!(e.initial_turn_rad >= 0.0) || !std::isfinite(e.initial_turn_rad)) {
+    throw InputError("explore.initial_turn_deg: expected a finite value >= 0");
+  }
   if (!(e.min_coverage_gain >= 0.0 && e.min_coverage_gain < 1.0)) {
     throw InputError("explore.min_coverage_gain: expected a value in [0, 1)");
   }

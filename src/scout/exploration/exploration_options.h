@@ -34,6 +34,10 @@ struct ExploreOptions {
   double map_update_interval_s = 1.0;
   // Coverage is measured (and a coverage.csv row recorded) this often.
   double coverage_interval_s = 2.0;
+  // Before exploring, the robot turns on the spot by this angle (radians): a
+  // 180 degree lidar sees nothing behind the start, where the frontier may
+  // then be empty, and SLAM gets a few scans of its surroundings. 0: none.
+  double initial_turn_rad = 6.283185307179586;
   // The frontier update strategy that feeds the goals (exact, direct, bfs,
   // dfd, full) and the goal policy (scout, nearest, explore-lite,
   // meanshift-centres).

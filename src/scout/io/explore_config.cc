@@ -88,6 +88,9 @@ void ReadExploreOptions(YamlSection s, exploration::ExploreOptions* o) {
   s.ReadNonNegative("min_coverage_gain", &o->min_coverage_gain);
   s.ReadPositive("map_update_interval_s", &o->map_update_interval_s);
   s.ReadPositive("coverage_interval_s", &o->coverage_interval_s);
+  double turn_deg = o->initial_turn_rad / kRadPerDeg;
+  s.ReadNonNegative("initial_turn_deg", &turn_deg);
+  o->initial_turn_rad = turn_deg * kRadPerDeg;
   s.ReadBool("evaluate_frontier", &o->evaluate_frontier);
   s.ReadBool("synchronous_slam", &o->synchronous_slam);
   ReadGoals(s.Section("goals"), &o->goals);

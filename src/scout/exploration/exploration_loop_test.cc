@@ -1,0 +1,120 @@
+// The whole closed loop (simulator, SLAM, frontier, goals) on a small
+// building: it must finish by itself, cover the reachable space, never
+// collide, never target the closet behind a too-narrow gap, and repeat
+// itself exactly for the same seed.
+
+#include "scout/exploration/exploration_loop.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+
+#include "scout/common/error.h"
+#include "scout/exploration/test_worlds.h"
+
+namespace scout::exploration {
+namespace {
+
+ExplorationResult Explore(const ExplorationOptions& options, uint64_t seed) {
+  ExplorationLoop loop(testing::SmallBuilding(), options, seed);
+  return loop.Run();
+}
+
+TEST(ExplorationLoopTest, ExploresASmallBuildingCompletelyAndQuickly) {
+  const auto start = std::chrono::steady_clock::now();
+  ExplorationLoop loop(testing::SmallBuilding(), {}, 7);
+  int progress_calls = 0;
+  const ExplorationResult r = loop.Run([&](const ExplorationProgress&) { ++progress_calls; }, 5.0);
+  const double wall_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::cout << "terminated=" << ToString(r.terminated) << " coverage=" << r.coverage
+            << " sim=" << r.sim_time_s << " s wall=" << wall_s << " s path=" << r.path_length_m
+            << " m goals issued=" << r.counters.goals_issued
+            << " reached=" << r.counters.goals_reached << " failed=" << r.counters.goals_failed
+            << " unreachable=" << r.unreachable_goals << "\n";
+  EXPECT_EQ(r.terminated, Termination::kComplete);
+  EXPECT_GE(r.coverage, 0.97);
+  EXPECT_EQ(r.collisions, 0);
+  EXPECT_EQ(r.unreachable_goals, 0);
+  EXPECT_GT(r.counters.goals_issued, 0);
+  EXPECT_LT(wall_s, 30.0);  // a few seconds in release; sanitizer builds are slower
+  EXPECT_GT(progress_calls, 2);
+  // The records agree with the totals.
+  ASSERT_FALSE(r.coverage_samples.empty());
+  EXPECT_DOUBLE_EQ(r.coverage_samples.back().coverage, r.coverage);
+  EXPECT_DOUBLE_EQ(r.coverage_samples.back().sim_time_s, r.sim_time_s);
+  for (size_t i = 1; i < r.coverage_samples.size(); ++i) {
+    EXPECT_GT(r.coverage_samples[i].sim_time_s, r.coverage_samples[i - 1].sim_time_s);
+    EXPECT_GE(r.coverage_samples[i].path_length_m, r.coverage_samples[i - 1].path_length_m);
+  }
+  ASSERT_TRUE(r.time_to_coverage_s[0].has_value());
+  EXPECT_LE(*r.time_to_coverage_s[0], r.sim_time_s);
+  EXPECT_EQ(static_cast<int>(r.goals.size()), r.counters.goals_issued);
+  // The SLAM estimate stays close to the truth: the last node against the
+  // true pose at its scan, in the world frame.
+  const std::vector<slam::TimedPose> nodes = loop.map_builder().GetTrajectory();
+  ASSERT_FALSE(nodes.empty());
+  for (const slam::TimedPose& t : r.truth) {
+    if (t.time_s != nodes.back().time_s) continue;
+    const Eigen::Vector2d estimate = (loop.world_from_map() * nodes.back().pose).translation();
+    EXPECT_LT((estimate - t.pose.translation()).norm(), 0.15);
+  }
+}
+
+TEST(ExplorationLoopTest, SameSeedSameRun) {
+  ExplorationOptions o;
+  o.explore.max_sim_time_s = 40.0;
+  const ExplorationResult a = Explore(o, 3);
+  const ExplorationResult b = Explore(o, 3);
+  EXPECT_EQ(a.terminated, b.terminated);
+  EXPECT_EQ(a.coverage, b.coverage);
+  EXPECT_EQ(a.path_length_m, b.path_length_m);
+  EXPECT_EQ(a.sim_time_s, b.sim_time_s);
+  EXPECT_EQ(a.counters.goals_issued, b.counters.goals_issued);
+  ASSERT_EQ(a.truth.size(), b.truth.size());
+  EXPECT_EQ(a.truth.back().pose.translation(), b.truth.back().pose.translation());
+  // A different seed draws different sensor noise, so the run differs.
+  const ExplorationResult c = Explore(o, 4);
+  EXPECT_NE(a.truth.back().pose.translation(), c.truth.back().pose.translation());
+}
+
+TEST(ExplorationLoopTest, ARunThatCannotFinishEndsByItself) {
+  ExplorationOptions o;
+  o.explore.max_sim_time_s = 3.0;
+  const ExplorationResult r = Explore(o, 1);
+  EXPECT_EQ(r.terminated, Termination::kMaxSimTime);
+  EXPECT_NEAR(r.sim_time_s, 3.0, 0.1);
+
+  // Without a goal policy able to move (zero speed is refused), a stalled
+  // robot is caught by the coverage watchdog instead.
+  ExplorationOptions stalled;
+  stalled.explore.no_progress_timeout_s = 5.0;
+  stalled.explore.goals.progress_timeout_s = 1000.0;
+  stalled.explore.follower.max_linear_speed_mps = 1e-4;
+  stalled.explore.follower.min_linear_speed_mps = 0.0;
+  stalled.explore.follower.max_angular_speed_radps = 1e-4;
+  const ExplorationResult s = Explore(stalled, 1);
+  EXPECT_EQ(s.terminated, Termination::kNoProgress);
+  EXPECT_LT(s.sim_time_s, 30.0);
+}
+
+TEST(ExplorationLoopTest, BadOptionsAndStartsAreInputErrors) {
+  ExplorationOptions o;
+  o.frontier.inflation_radius_m = 0.25;  // below the planner's 0.40
+  EXPECT_THROW(Explore(o, 1), InputError);
+  o = {};
+  o.explore.strategy = "magic";
+  EXPECT_THROW(Explore(o, 1), InputError);
+  o = {};
+  o.explore.goal_policy = "random";
+  EXPECT_THROW(Explore(o, 1), InputError);
+  o = {};
+  o.start = Eigen::Vector2d(2.2, 4.2);  // inside the pillar
+  EXPECT_THROW(Explore(o, 1), InputError);
+  o = {};
+  o.explore.dt_s = 0.0;
+  EXPECT_THROW(Explore(o, 1), InputError);
+}
+
+}  // namespace
+}  // namespace scout::exploration

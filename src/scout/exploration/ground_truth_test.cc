@@ -1,0 +1,80 @@
+#include "scout/exploration/ground_truth.h"
+
+#include <gtest/gtest.h>
+
+#include "scout/common/error.h"
+#include "scout/exploration/test_worlds.h"
+
+namespace scout::exploration {
+namespace {
+
+using grid::CellState;
+
+GroundTruth Truth(const sim::World& w) { return GroundTruth(w.map, w.name, w.start, {}, 0.20); }
+
+TEST(GroundTruthTest, ReachableAreaIsWhatTheDiscCoversAwayFromTheInflationBand) {
+  const sim::World w = testing::SmallBuilding();
+  const GroundTruth truth = Truth(w);
+  // The rooms hold 9 x 6 m minus the wall, pillar and closet; the disc keeps
+  // 0.40 m between its centre and walls, so it covers all but a 0.2 m band.
+  EXPECT_GT(truth.reachable_free_m2(), 35.0);
+  EXPECT_LT(truth.reachable_free_m2(), 48.0);
+  const std::vector<uint8_t> mask = truth.ReachableMask();
+  const grid::MapLimits& l = w.map.limits;
+  EXPECT_TRUE(mask[l.FlatIndex(l.CellContaining({6.5, 1.5}))]);   // the right room
+  EXPECT_FALSE(mask[l.FlatIndex(l.CellContaining({8.6, 5.6}))]);  // inside the closet
+  EXPECT_FALSE(mask[l.FlatIndex(l.CellContaining({0.2, 3.0}))]);  // against the left wall
+}
+
+TEST(GroundTruthTest, MappedAreaCountsOnlyFreeCellsWhereTheWorldIsFree) {
+  const sim::World w = testing::SmallBuilding();
+  const GroundTruth truth = Truth(w);
+  EXPECT_DOUBLE_EQ(truth.MappedFreeM2(w.map, geometry::Rigid2d()), truth.reachable_free_m2());
+
+  grid::OccupancyMap unknown = w.map;
+  std::fill(unknown.cells.begin(), unknown.cells.end(), CellState::kUnknown);
+  EXPECT_EQ(truth.MappedFreeM2(unknown, geometry::Rigid2d()), 0.0);
+
+  // A map in a frame shifted by (1, 0): the same free space, placed back by
+  // world_from_map, counts in full; without the transform it does not.
+  grid::OccupancyMap shifted = w.map;
+  shifted.limits = grid::MapLimits(0.05, {-1.0, 0.0}, w.map.limits.width(), w.map.limits.height());
+  EXPECT_DOUBLE_EQ(truth.MappedFreeM2(shifted, geometry::Rigid2d(1.0, 0.0, 0.0)),
+                   truth.reachable_free_m2());
+  EXPECT_LT(truth.MappedFreeM2(shifted, geometry::Rigid2d()), 0.95 * truth.reachable_free_m2());
+
+  // Only the left room mapped: about half.
+  grid::OccupancyMap left = unknown;
+  testing::Paint(left, 0.15, 0.15, 4.45, 6.15, CellState::kFree);
+  const double share = truth.MappedFreeM2(left, geometry::Rigid2d()) / truth.reachable_free_m2();
+  EXPECT_GT(share, 0.4);
+  EXPECT_LT(share, 0.6);
+}
+
+TEST(GroundTruthTest, TheDiscReachesTheOtherRoomButNotTheCloset) {
+  const GroundTruth truth = Truth(testing::SmallBuilding());
+  EXPECT_TRUE(truth.DiscCanReach({1.5, 1.5}, {7.0, 2.0}, 0.25));
+  EXPECT_TRUE(truth.DiscCanReach({1.5, 1.5}, {8.55, 4.5}, 0.25));    // in front of the gap
+  EXPECT_FALSE(truth.DiscCanReach({1.5, 1.5}, {8.55, 5.6}, 0.25));   // behind it
+  EXPECT_FALSE(truth.DiscCanReach({1.5, 1.5}, {20.0, 20.0}, 0.25));  // off the map
+}
+
+TEST(GroundTruthTest, StartInAWallOrWithoutRoomIsAnInputError) {
+  sim::World w = testing::SmallBuilding();
+  w.start = {4.55, 1.0};  // inside the dividing wall
+  try {
+    Truth(w);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("--start"), std::string::npos) << e.what();
+  }
+  // A corridor 0.6 m wide: the bare disc fits, the inflated robot does not.
+  sim::World narrow = w;
+  std::fill(narrow.map.cells.begin(), narrow.map.cells.end(), CellState::kOccupied);
+  testing::Paint(narrow.map, 1.0, 1.0, 1.6, 5.0, CellState::kFree);
+  narrow.start = {1.3, 3.0};
+  EXPECT_THROW(Truth(narrow), InputError);
+}
+
+}  // namespace
+}  // namespace scout::exploration
