@@ -111,7 +111,7 @@ TEST_F(ReplayCli, MapsTheLoopAccuratelyAndWritesEveryOutput) {
   // The malformed line is reported with its line number, and the run goes on.
   EXPECT_NE(r.output.find("corridor.log:"), std::string::npos) << r.output;
   for (const char* name : {"summary.json", "map.yaml", "map.pgm", "map.png", "trajectory.tum",
-                           "frontier.csv", "frontiers.png"}) {
+                           "frontier.csv", "frontiers.png", "report.html"}) {
     EXPECT_TRUE(fs::exists(out / name)) << name;
   }
   const nlohmann::json s = nlohmann::json::parse(ReadFile(out / "summary.json"));

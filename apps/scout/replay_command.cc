@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/scout/command_util.h"
+#include "apps/scout/report_command.h"
 #include "scout/common/atomic_file.h"
 #include "scout/common/error.h"
 #include "scout/common/resource_usage.h"
@@ -204,7 +205,10 @@ int RunReplay(const ReplayArgs& args) {
   io::WriteTumTrajectory(trajectory, out.Stage("trajectory.tum"));
   io::WriteFrontierCsv(engine, out.Stage("frontier.csv"));
   io::WriteFrontierPicture(engine, args.picture_strategy, out.Stage("frontiers.png"));
-  WriteTextFileAtomically(out.Stage("summary.json"), summary.dump(2) + "\n");
+  const std::filesystem::path summary_path = out.Stage("summary.json");
+  WriteTextFileAtomically(summary_path, summary.dump(2) + "\n");
+  // The report reads the staged outputs and is committed together with them.
+  StageRunReport(summary_path.parent_path(), out);
   out.Commit();
 
   std::cout << "replay: " << dataset.name << ": " << num_scans << " scans, " << stats.num_nodes
@@ -223,7 +227,8 @@ int RunReplay(const ReplayArgs& args) {
   }
   PrintStrategyTable(engine, std::cout);
   std::cout << "outputs: " << (out.path() / "summary.json").string()
-            << ", map.yaml, map.pgm, map.png, trajectory.tum, frontier.csv, frontiers.png\n";
+            << ", map.yaml, map.pgm, map.png, trajectory.tum, frontier.csv, frontiers.png, "
+               "report.html\n";
   return 0;
 }
 
