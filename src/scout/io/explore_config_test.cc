@@ -1,0 +1,100 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+
+#include "scout/common/atomic_file.h"
+#include "scout/common/error.h"
+#include "scout/io/config.h"
+
+namespace scout::io {
+namespace {
+
+namespace fs = std::filesystem;
+
+class ExploreConfigTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    std::random_device rd;
+    dir_ = fs::temp_directory_path() / ("scout_explore_config_test_" + std::to_string(rd()));
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  ScoutConfig Load(const std::string& text) {
+    const fs::path p = dir_ / "options.yaml";
+    WriteTextFileAtomically(p, text);
+    return LoadConfig(p);
+  }
+  std::string ErrorOf(const std::string& text) {
+    try {
+      Load(text);
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "";
+  }
+  fs::path dir_;
+};
+
+TEST_F(ExploreConfigTest, DefaultFileMatchesTheBuiltInDefaults) {
+  const ScoutConfig c = LoadConfig(fs::path(SCOUT_SOURCE_DIR) / "config" / "default.yaml");
+  const ScoutConfig d;
+  EXPECT_DOUBLE_EQ(c.explore.dt_s, d.explore.dt_s);
+  EXPECT_DOUBLE_EQ(c.explore.max_sim_time_s, d.explore.max_sim_time_s);
+  EXPECT_DOUBLE_EQ(c.explore.no_progress_timeout_s, d.explore.no_progress_timeout_s);
+  EXPECT_DOUBLE_EQ(c.explore.map_update_interval_s, d.explore.map_update_interval_s);
+  EXPECT_NEAR(c.explore.initial_turn_rad, d.explore.initial_turn_rad, 1e-12);
+  EXPECT_EQ(c.explore.synchronous_slam, d.explore.synchronous_slam);
+  EXPECT_DOUBLE_EQ(c.explore.goals.progress_timeout_s, d.explore.goals.progress_timeout_s);
+  EXPECT_EQ(c.explore.goals.return_to_start, d.explore.goals.return_to_start);
+  EXPECT_EQ(c.explore.goals.failed_goals.max_failures, d.explore.goals.failed_goals.max_failures);
+  EXPECT_DOUBLE_EQ(c.explore.traversability.safety_margin_m,
+                   d.explore.traversability.safety_margin_m);
+  EXPECT_EQ(c.explore.planner.shortcut, d.explore.planner.shortcut);
+  EXPECT_NEAR(c.explore.follower.rotate_in_place_heading_rad,
+              d.explore.follower.rotate_in_place_heading_rad, 1e-3);
+  EXPECT_DOUBLE_EQ(c.explore.policy.navigation.mean_shift.bandwidth_m,
+                   d.explore.policy.navigation.mean_shift.bandwidth_m);
+  EXPECT_DOUBLE_EQ(c.explore.policy.navigation.info_multiplier,
+                   d.explore.policy.navigation.info_multiplier);
+  EXPECT_DOUBLE_EQ(c.explore.policy.explore_lite.potential_scale,
+                   d.explore.policy.explore_lite.potential_scale);
+  EXPECT_DOUBLE_EQ(c.robot.robot.radius_m, d.robot.robot.radius_m);
+  EXPECT_DOUBLE_EQ(c.robot.robot.max_angular_accel_radps2, d.robot.robot.max_angular_accel_radps2);
+  EXPECT_DOUBLE_EQ(c.robot.odometry_rate_hz, d.robot.odometry_rate_hz);
+  EXPECT_DOUBLE_EQ(c.robot.start_heading_rad, d.robot.start_heading_rad);
+  EXPECT_EQ(c.robot.lidar.beams, d.robot.lidar.beams);
+  EXPECT_DOUBLE_EQ(c.robot.odometry.rot_per_trans, d.robot.odometry.rot_per_trans);
+}
+
+TEST_F(ExploreConfigTest, ValuesAreReadWithTheirUnits) {
+  const ScoutConfig c = Load(
+      "explore:\n  max_sim_time_s: 120\n  initial_turn_deg: 90\n  goals:\n    return_to_start: "
+      "true\n  follower:\n    rotate_in_place_heading_deg: 30\nrobot:\n  start_heading_deg: "
+      "-90\n  lidar:\n    beams: 361\n");
+  EXPECT_DOUBLE_EQ(c.explore.max_sim_time_s, 120.0);
+  EXPECT_NEAR(c.explore.initial_turn_rad, std::numbers::pi / 2, 1e-12);
+  EXPECT_TRUE(c.explore.goals.return_to_start);
+  EXPECT_NEAR(c.explore.follower.rotate_in_place_heading_rad, std::numbers::pi / 6, 1e-12);
+  EXPECT_NEAR(c.robot.start_heading_rad, -std::numbers::pi / 2, 1e-12);
+  EXPECT_EQ(c.robot.lidar.beams, 361);
+}
+
+TEST_F(ExploreConfigTest, ErrorsNameTheKey) {
+  EXPECT_NE(ErrorOf("explore:\n  dt_s: -1\n").find("explore.dt_s"), std::string::npos);
+  EXPECT_NE(ErrorOf("explore:\n  goals:\n    no_such_key: 1\n").find("explore.goals.no_such_key"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf("robot:\n  lidar:\n    beams: 1\n").find("robot.lidar.beams"),
+            std::string::npos);
+  // Range checks of the explore module come back as InputError naming the key.
+  const std::string hysteresis = ErrorOf("explore:\n  goals:\n    max_failures: -1\n");
+  EXPECT_NE(hysteresis.find("max_failures"), std::string::npos) << hysteresis;
+  const std::string follower = ErrorOf("explore:\n  follower:\n    min_linear_speed_mps: 0.9\n");
+  EXPECT_NE(follower.find("explore.follower"), std::string::npos) << follower;
+  const std::string dropout = ErrorOf("robot:\n  lidar:\n    dropout_probability: 1.5\n");
+  EXPECT_NE(dropout.find("dropout_probability"), std::string::npos) << dropout;
+}
+
+}  // namespace
+}  // namespace scout::io
