@@ -1,0 +1,143 @@
+// End-to-end tests of `scout explore`: exit codes, error messages, and the
+// outputs of a complete run on a small hand-made building map.
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <random>
+#include <sstream>
+
+#include "scout/common/atomic_file.h"
+#include "scout/grid/map_io.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using scout::grid::CellState;
+
+struct Result {
+  int exit_code = -1;
+  std::string output;  // stdout and stderr
+};
+
+Result RunScout(const std::string& args) {
+  const std::string command = std::string(SCOUT_BINARY) + " " + args + " 2>&1";
+  Result r;
+  FILE* pipe = popen(command.c_str(), "r");
+  char buffer[4096];
+  while (pipe != nullptr && fgets(buffer, sizeof(buffer), pipe) != nullptr) r.output += buffer;
+  const int status = pipe != nullptr ? pclose(pipe) : -1;
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+// Writes a map_server map 'name'.yaml: walls everywhere except the cells whose
+// centres lie in one of the free boxes {x0, y0, x1, y1} (metres).
+void WriteMap(const fs::path& dir, const std::string& name, int width, int height,
+              const std::vector<std::array<double, 4>>& free_boxes) {
+  scout::grid::OccupancyMap map;
+  map.limits = scout::grid::MapLimits(0.05, {0, 0}, width, height);
+  map.cells.assign(map.limits.num_cells(), CellState::kOccupied);
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const Eigen::Vector2d c = map.limits.CellCenter({x, y});
+      for (const auto& b : free_boxes) {
+        if (c.x() >= b[0] && c.x() <= b[2] && c.y() >= b[1] && c.y() <= b[3]) {
+          map.set({x, y}, CellState::kFree);
+        }
+      }
+    }
+  }
+  scout::grid::WriteMapServerMap(map, dir / (name + ".yaml"));
+}
+
+class ExploreCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    std::random_device rd;
+    dir_ = fs::temp_directory_path() / ("scout_explore_cli_test_" + std::to_string(rd()));
+    fs::create_directories(dir_);
+    // 8 m x 5 m: two rooms joined by a 1.2 m door.
+    WriteMap(dir_, "rooms", 166, 106,
+             {{0.15, 0.15, 3.95, 5.15}, {4.1, 0.15, 8.15, 5.15}, {3.9, 2.0, 4.2, 3.2}});
+    // A corridor only 0.6 m wide: the robot fits, its safety margin does not.
+    WriteMap(dir_, "narrow", 100, 40, {{0.5, 0.7, 4.5, 1.3}});
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  fs::path dir_;
+};
+
+TEST_F(ExploreCli, BadInputsNameWhatIsWrongAndLeaveNoOutputs) {
+  const fs::path out = dir_ / "out";
+  const std::string o = " --quiet --out " + out.string();
+  const std::string rooms = " --world " + (dir_ / "rooms.yaml").string();
+  Result r = RunScout("explore --world atlantis" + o);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("unknown world 'atlantis'"), std::string::npos) << r.output;
+  r = RunScout("explore --start 4.05,0.5" + rooms + o);  // inside the dividing wall
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("--start X,Y"), std::string::npos) << r.output;
+  r = RunScout("explore --start 1:2" + rooms + o);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("expected X,Y"), std::string::npos) << r.output;
+  r = RunScout("explore --world " + (dir_ / "narrow.yaml").string() + o);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("no free space is reachable"), std::string::npos) << r.output;
+  r = RunScout("explore --strategy magic" + rooms + o);
+  EXPECT_EQ(r.exit_code, 2);
+  r = RunScout("explore --goals random" + rooms + o);
+  EXPECT_EQ(r.exit_code, 2);
+  r = RunScout("explore --max-sim-time -5" + rooms + o);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("--max-sim-time"), std::string::npos) << r.output;
+  scout::WriteTextFileAtomically(dir_ / "contradictory.yaml",
+                                 "frontier:\n  inflation_radius_m: 0.3\n");
+  r = RunScout("explore --config " + (dir_ / "contradictory.yaml").string() + rooms + o);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("contradictory"), std::string::npos) << r.output;
+  scout::WriteTextFileAtomically(dir_ / "bad.yaml", "explore:\n  follower:\n    lookahead: 1\n");
+  r = RunScout("explore --config " + (dir_ / "bad.yaml").string() + rooms + o);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("explore.follower.lookahead"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST_F(ExploreCli, ExploresASmallMapAndWritesEveryOutput) {
+  const fs::path out = dir_ / "out";
+  const Result r = RunScout("explore --quiet --seed 2 --world " + (dir_ / "rooms.yaml").string() +
+                            " --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  for (const char* name : {"map.yaml", "map.pgm", "map.png", "trajectory.tum", "truth.tum",
+                           "frontier.csv", "coverage.csv", "summary.json"}) {
+    EXPECT_TRUE(fs::exists(out / name)) << name;
+  }
+  std::ifstream in(out / "summary.json");
+  const nlohmann::json s = nlohmann::json::parse(in);
+  EXPECT_EQ(s["world"], "rooms");
+  EXPECT_EQ(s["seed"], 2);
+  EXPECT_EQ(s["strategy"], "exact");
+  EXPECT_EQ(s["goals_policy"], "scout");
+  EXPECT_EQ(s["terminated"], "complete");
+  EXPECT_GE(s["coverage"].get<double>(), 0.97);
+  EXPECT_NEAR(s["coverage"].get<double>(),
+              s["mapped_free_m2"].get<double>() / s["reachable_free_m2"].get<double>(), 1e-9);
+  EXPECT_EQ(s["collisions"], 0);
+  EXPECT_EQ(s["goals"]["unreachable"], 0);
+  EXPECT_GT(s["goals"]["issued"].get<int>(), 0);
+  EXPECT_LT(s["ate_rmse_m"].get<double>(), 0.1);
+  EXPECT_GT(s["sim_time_s"].get<double>(), s["wall_time_s"].get<double>());
+  EXPECT_TRUE(s["time_to_coverage_s"]["0.90"].is_number());
+  EXPECT_TRUE(s["slam"].contains("nodes"));
+  EXPECT_TRUE(s["frontier"]["strategies"].contains("exact"));
+  std::ifstream csv(out / "coverage.csv");
+  std::string header;
+  std::getline(csv, header);
+  EXPECT_EQ(header, "sim_time_s,path_length_m,coverage");
+}
+
+}  // namespace
