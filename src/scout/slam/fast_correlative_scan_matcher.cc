@@ -1,10 +1,12 @@
 #include "scout/slam/fast_correlative_scan_matcher.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 #include "scout/grid/probability_values.h"
 
@@ -14,6 +16,41 @@ namespace {
 // Unknown cells and cells outside the grid count as this raw value, which
 // decodes to kMinProbability.
 constexpr uint16_t kFloorValue = 1;
+// Coarse levels store ceil(value * kMaxCoarse / kMaxValue): never below the
+// value they bound. The floor maps to 1 as well.
+constexpr int kMaxCoarse = 255;
+constexpr uint8_t kCoarseFloor = 1;
+
+uint8_t ToCoarse(uint16_t value) {
+  return static_cast<uint8_t>((static_cast<int>(value) * kMaxCoarse + grid::kMaxValue - 1) /
+                              grid::kMaxValue);
+}
+
+// Sum of the values of 'level' under 'cells' shifted by (x, y); cells outside
+// count as 'floor'. Cells wholly inside (known from the scan's bounds) skip
+// the per-cell check, the common case near a match.
+template <typename T>
+int64_t SumCells(const T* values, int offset, int width, int height,
+                 const std::vector<grid::CellIndex>& cells, bool inside, int x, int y, T floor) {
+  int64_t sum = 0;
+  const int dx = x + offset;
+  const int dy = y + offset;
+  if (inside) {
+    for (const grid::CellIndex& cell : cells) {
+      sum += values[static_cast<size_t>(cell.y + dy) * width + (cell.x + dx)];
+    }
+    return sum;
+  }
+  for (const grid::CellIndex& cell : cells) {
+    const int sx = cell.x + dx;
+    const int sy = cell.y + dy;
+    sum += (static_cast<unsigned>(sx) >= static_cast<unsigned>(width) ||
+            static_cast<unsigned>(sy) >= static_cast<unsigned>(height))
+               ? floor
+               : values[static_cast<size_t>(sy) * width + sx];
+  }
+  return sum;
+}
 constexpr int kMidValue = (1 + grid::kMaxValue) / 2;  // decodes to 0.5
 constexpr double kProbabilityPerValue =
     (0.9 - 0.1) /  // the exact bounds behind kMinProbability and kMaxProbability
@@ -67,29 +104,29 @@ FastCorrelativeScanMatcher::FastCorrelativeScanMatcher(
     const grid::ProbabilityGrid& grid, const FastCorrelativeScanMatcherOptions& options)
     : options_(options), limits_(grid.limits()) {
   Validate(options);
-  PrecomputedGrid base;
-  base.width = limits_.width();
-  base.height = limits_.height();
-  base.values.resize(grid.values().size());
-  for (size_t i = 0; i < base.values.size(); ++i) {
+  exact_.width = limits_.width();
+  exact_.height = limits_.height();
+  exact_.values.resize(grid.values().size());
+  for (size_t i = 0; i < exact_.values.size(); ++i) {
     const uint16_t v = grid.values()[i] & grid::kMaxValue;
-    base.values[i] = v == grid::kUnknownValue ? kFloorValue : v;
+    exact_.values[i] = v == grid::kUnknownValue ? kFloorValue : v;
   }
-  levels_.push_back(std::move(base));
   // Level d from level d - 1: a 2^d window is the union of four 2^(d-1)
-  // windows, so each level costs four lookups per cell.
-  for (int d = 1; d < options.branch_and_bound_depth; ++d) {
-    const PrecomputedGrid& finer = levels_.back();
+  // windows, so each level costs four lookups per cell. Rounding up commutes
+  // with max, so quantizing level 1 and pooling bytes above stays a bound.
+  const auto pool = [this](const auto& finer, int d, auto quantize) {
     const int half = 1 << (d - 1);
-    PrecomputedGrid level;
+    PrecomputedGrid<uint8_t> level;
     level.offset = (1 << d) - 1;
     level.width = limits_.width() + level.offset;
     level.height = limits_.height() + level.offset;
     level.values.resize(static_cast<size_t>(level.width) * level.height);
-    const auto finer_at = [&finer](int cx, int cy) -> uint16_t {
+    using Value = typename std::decay_t<decltype(finer.values)>::value_type;
+    const Value floor = static_cast<Value>(d == 1 ? kFloorValue : kCoarseFloor);
+    const auto finer_at = [&finer, floor](int cx, int cy) -> Value {
       const int sx = cx + finer.offset;
       const int sy = cy + finer.offset;
-      if (sx < 0 || sy < 0 || sx >= finer.width || sy >= finer.height) return kFloorValue;
+      if (sx < 0 || sy < 0 || sx >= finer.width || sy >= finer.height) return floor;
       return finer.values[static_cast<size_t>(sy) * finer.width + sx];
     };
     for (int sy = 0; sy < level.height; ++sy) {
@@ -97,12 +134,36 @@ FastCorrelativeScanMatcher::FastCorrelativeScanMatcher(
       for (int sx = 0; sx < level.width; ++sx) {
         const int cx = sx - level.offset;
         level.values[static_cast<size_t>(sy) * level.width + sx] =
-            std::max({finer_at(cx, cy), finer_at(cx + half, cy), finer_at(cx, cy + half),
-                      finer_at(cx + half, cy + half)});
+            quantize(std::max({finer_at(cx, cy), finer_at(cx + half, cy), finer_at(cx, cy + half),
+                               finer_at(cx + half, cy + half)}));
       }
     }
-    levels_.push_back(std::move(level));
+    return level;
+  };
+  for (int d = 1; d < options.branch_and_bound_depth; ++d) {
+    if (d == 1) {
+      coarse_.push_back(pool(exact_, d, ToCoarse));
+    } else {
+      coarse_.push_back(pool(coarse_.back(), d, [](uint8_t v) { return v; }));
+    }
   }
+}
+
+int64_t FastCorrelativeScanMatcher::Score(int depth, const DiscreteScan& scan, int x, int y) const {
+  if (depth == 0) {
+    const bool inside = scan.min_x + x >= 0 && scan.min_y + y >= 0 &&
+                        scan.max_x + x < exact_.width && scan.max_y + y < exact_.height;
+    return SumCells(exact_.values.data(), 0, exact_.width, exact_.height, scan.cells, inside, x, y,
+                    kFloorValue);
+  }
+  const PrecomputedGrid<uint8_t>& level = coarse_[depth - 1];
+  const bool inside = scan.min_x + x + level.offset >= 0 && scan.min_y + y + level.offset >= 0 &&
+                      scan.max_x + x + level.offset < level.width &&
+                      scan.max_y + y + level.offset < level.height;
+  const int64_t sum = SumCells(level.values.data(), level.offset, level.width, level.height,
+                               scan.cells, inside, x, y, kCoarseFloor);
+  // Back to level 0 units, rounded up so the bound stays a bound.
+  return (sum * grid::kMaxValue + kMaxCoarse - 1) / kMaxCoarse;
 }
 
 std::optional<ScanMatchResult> FastCorrelativeScanMatcher::Match(
@@ -135,40 +196,40 @@ std::optional<ScanMatchResult> FastCorrelativeScanMatcher::Search(
 
   // The scan, placed at the initial translation under each candidate angle and
   // discretized once; translations then only shift cell indices.
-  std::vector<std::vector<grid::CellIndex>> scans;
+  std::vector<DiscreteScan> scans;
   std::vector<double> angles;
   for (int k = -num_angles_each_side; k <= num_angles_each_side; ++k) {
     const double angle = initial_pose_estimate.theta() + k * angle_step;
     const geometry::Rigid2d pose(initial_pose_estimate.translation(), angle);
-    std::vector<grid::CellIndex>& cells = scans.emplace_back();
-    cells.reserve(points.size());
-    for (const Eigen::Vector2d& p : points) cells.push_back(limits_.CellContaining(pose * p));
+    DiscreteScan& scan = scans.emplace_back();
+    scan.cells.reserve(points.size());
+    for (const Eigen::Vector2d& p : points) scan.cells.push_back(limits_.CellContaining(pose * p));
+    scan.min_x = scan.max_x = scan.cells.front().x;
+    scan.min_y = scan.max_y = scan.cells.front().y;
+    for (const grid::CellIndex& c : scan.cells) {
+      scan.min_x = std::min(scan.min_x, c.x);
+      scan.max_x = std::max(scan.max_x, c.x);
+      scan.min_y = std::min(scan.min_y, c.y);
+      scan.max_y = std::max(scan.max_y, c.y);
+    }
     angles.push_back(angle);
   }
 
-  const auto score = [&](int depth, Candidate* c) {
-    const PrecomputedGrid& level = levels_[depth];
-    int64_t sum = 0;
-    for (const grid::CellIndex& cell : scans[c->angle_index]) {
-      const int sx = cell.x + c->x + level.offset;
-      const int sy = cell.y + c->y + level.offset;
-      sum += (sx < 0 || sy < 0 || sx >= level.width || sy >= level.height)
-                 ? kFloorValue
-                 : level.values[static_cast<size_t>(sy) * level.width + sx];
-    }
-    c->sum = sum;
-  };
   const auto by_bound = [](const Candidate& a, const Candidate& b) { return a.sum > b.sum; };
+  // Bounds below this sum cannot reach min_score (ScoreOfSum is increasing).
+  const auto below_threshold = [&](int64_t sum) {
+    return ScoreOfSum(sum, points.size()) < min_score;
+  };
 
-  const int top = static_cast<int>(levels_.size()) - 1;
+  const int top = static_cast<int>(coarse_.size());
   const int top_step = 1 << top;
   std::vector<Candidate> roots;
   for (int a = 0; a < static_cast<int>(scans.size()); ++a) {
     for (int x = -linear_bound; x <= linear_bound; x += top_step) {
       for (int y = -linear_bound; y <= linear_bound; y += top_step) {
-        Candidate c{a, x, y, 0};
-        score(top, &c);
-        roots.push_back(c);
+        const Candidate c{a, x, y, Score(top, scans[a], x, y)};
+        // Hopeless roots never need sorting.
+        if (!below_threshold(c.sum)) roots.push_back(c);
       }
     }
   }
@@ -177,32 +238,38 @@ std::optional<ScanMatchResult> FastCorrelativeScanMatcher::Search(
   std::optional<Candidate> best;
   // Depth-first, best bound first (Hess et al. 2016, algorithm 3): a node is
   // expanded only if its bound beats both the threshold and the best leaf.
-  const auto branch = [&](auto&& self, const std::vector<Candidate>& candidates,
+  const auto branch = [&](auto&& self, const Candidate* candidates, size_t count,
                           int depth) -> void {
-    for (const Candidate& c : candidates) {
-      if (ScoreOfSum(c.sum, points.size()) < min_score) return;
+    for (size_t i = 0; i < count; ++i) {
+      const Candidate& c = candidates[i];
+      if (below_threshold(c.sum)) return;
       if (best.has_value() && c.sum <= best->sum) return;
       if (depth == 0) {
         best = c;
         continue;  // sorted: later siblings cannot beat this leaf
       }
       const int half = 1 << (depth - 1);
-      std::vector<Candidate> children;
-      children.reserve(4);
+      std::array<Candidate, 4> children;
+      size_t num_children = 0;
       for (const int dx : {0, half}) {
         if (c.x + dx > linear_bound) continue;
         for (const int dy : {0, half}) {
           if (c.y + dy > linear_bound) continue;
-          Candidate child{c.angle_index, c.x + dx, c.y + dy, 0};
-          score(depth - 1, &child);
-          children.push_back(child);
+          children[num_children++] = {c.angle_index, c.x + dx, c.y + dy,
+                                      Score(depth - 1, scans[c.angle_index], c.x + dx, c.y + dy)};
         }
       }
-      std::sort(children.begin(), children.end(), by_bound);
-      self(self, children, depth - 1);
+      // Insertion sort: at most four elements (and std::sort's 16-element
+      // threshold trips GCC's array-bounds analysis here).
+      for (size_t j = 1; j < num_children; ++j) {
+        for (size_t k = j; k > 0 && by_bound(children[k], children[k - 1]); --k) {
+          std::swap(children[k], children[k - 1]);
+        }
+      }
+      self(self, children.data(), num_children, depth - 1);
     }
   };
-  branch(branch, roots, top);
+  branch(branch, roots.data(), roots.size(), top);
   if (!best.has_value()) return std::nullopt;
   const Eigen::Vector2d translation =
       initial_pose_estimate.translation() + resolution * Eigen::Vector2d(best->x, best->y);

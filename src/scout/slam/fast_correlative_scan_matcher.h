@@ -65,11 +65,21 @@ class FastCorrelativeScanMatcher {
   // Level d holds, for every cell c, the max raw value over the cells
   // [c.x, c.x + 2^d) x [c.y, c.y + 2^d) of the grid; cells are offset by
   // 2^d - 1 so that windows reaching into the grid from below are stored too.
+  // Level 0 keeps the exact 15-bit values, so leaves score exactly. Levels
+  // >= 1 only bound scores from above, and a byte per cell does (rounded up
+  // to 1/255 of the value range): half the memory of 16 bits, and the coarse
+  // levels, read most often, stay in cache better.
+  template <typename T>
   struct PrecomputedGrid {
     int offset = 0;  // 2^d - 1
     int width = 0;
     int height = 0;
-    std::vector<uint16_t> values;
+    std::vector<T> values;
+  };
+  // Per angle: the scan's cells at the initial translation and their bounds.
+  struct DiscreteScan {
+    std::vector<grid::CellIndex> cells;
+    int min_x = 0, max_x = 0, min_y = 0, max_y = 0;
   };
   struct Candidate;
 
@@ -79,7 +89,12 @@ class FastCorrelativeScanMatcher {
 
   FastCorrelativeScanMatcherOptions options_;
   grid::MapLimits limits_;
-  std::vector<PrecomputedGrid> levels_;
+  // Sum of the raw values under 'scan' shifted by (x, y) cells at 'depth', in
+  // level 0 units (an upper bound at depth >= 1, exact at depth 0).
+  int64_t Score(int depth, const DiscreteScan& scan, int x, int y) const;
+
+  PrecomputedGrid<uint16_t> exact_;
+  std::vector<PrecomputedGrid<uint8_t>> coarse_;  // coarse_[d - 1] is level d
 };
 
 }  // namespace scout::slam

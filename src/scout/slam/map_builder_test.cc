@@ -119,7 +119,8 @@ TEST(MapBuilderTest, TracksALoopAndClosesIt) {
             << r.seconds << " s total; trajectory rms " << rms << " m, max " << worst << " m\n";
   EXPECT_GT(r.stats.num_nodes, 250);
   EXPECT_GT(r.stats.num_loop_closures, 5);
-  EXPECT_LT(rms, 0.08);
+  // 0.1 m (was 0.08): see the local SLAM test on the weaker scan matcher priors.
+  EXPECT_LT(rms, 0.1);
   EXPECT_LT(worst, 0.2);
 }
 
@@ -204,7 +205,7 @@ TEST(MapBuilderTest, BackgroundModeCompletesWithTheSynchronousResult) {
 TEST(MapBuilderTest, ThinnedEventStreamStillReportsFirstAndFinishingInsertions) {
   SlamOptions options = TestOptions(true);
   options.submap_event_every_n_insertions = 7;
-  const SimulatedRun run = Simulate(200);  // ~90 nodes: two submaps finish
+  const SimulatedRun run = Simulate(260);  // ~110 nodes: two submaps finish
   const Recorded r = Drive(options, run);
   std::set<int> first_seen, finished;
   int changed = 0;
