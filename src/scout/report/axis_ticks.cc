@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
+#include <string_view>
 
 namespace scout::report {
 namespace {
@@ -99,9 +101,10 @@ std::string FormatTick(double value, double step) {
     return buffer;
   }
   std::snprintf(buffer, sizeof(buffer), "%.*f", std::clamp(DecimalsFor(step), 0, 12), value);
-  std::string text = buffer;
-  if (text == "-0") text = "0";
-  return text;
+  // Returned fresh rather than assigned: g++ 12 with sanitizers reports a
+  // false -Wrestrict on assigning a literal into the string here.
+  if (std::string_view(buffer) == "-0") return "0";
+  return buffer;
 }
 
 std::vector<std::string> TickLabels(const AxisTicks& axis) {
