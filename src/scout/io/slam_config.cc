@@ -74,6 +74,7 @@ void ReadPoseGraph(YamlSection s, slam::PoseGraphOptions* o) {
   s.ReadNonNegative("intra_submap_translation_weight", &o->intra_submap_translation_weight);
   s.ReadNonNegative("intra_submap_rotation_weight", &o->intra_submap_rotation_weight);
   ReadAdaptiveVoxelFilter(s.Section("loop_closure_voxel_filter"), &o->loop_closure_voxel_filter);
+  s.ReadInt("skip_neighbour_submaps", &o->skip_neighbour_submaps, 0);
   {
     YamlSection c = s.Section("constraint_builder");
     slam::ConstraintBuilderOptions& b = o->constraint_builder;

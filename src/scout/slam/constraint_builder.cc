@@ -51,8 +51,9 @@ ConstraintBuilder::ConstraintBuilder(const ConstraintBuilderOptions& options)
 void ConstraintBuilder::AddFinishedSubmap(int submap_id,
                                           std::shared_ptr<const grid::ProbabilityGrid> grid) {
   if (submaps_.count(submap_id) > 0) return;  // a finished grid never changes
+  // The matcher shares the grid (its finest level) rather than copying it.
   auto matcher =
-      std::make_unique<FastCorrelativeScanMatcher>(*grid, options_.fast_correlative_scan_matcher);
+      std::make_unique<FastCorrelativeScanMatcher>(grid, options_.fast_correlative_scan_matcher);
   submaps_.emplace(submap_id, SubmapMatcher{std::move(grid), std::move(matcher),
                                             FixedRatioSampler(options_.sampling_ratio)});
 }

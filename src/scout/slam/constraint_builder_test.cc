@@ -75,7 +75,9 @@ TEST(ConstraintBuilderTest, RejectsAScanOfAnotherPlace) {
 
 TEST(ConstraintBuilderTest, SamplesAFixedRatioOfNearbyPairsPerSubmap) {
   const SubmapScene scene;
-  ConstraintBuilder builder({});
+  ConstraintBuilderOptions options;
+  options.sampling_ratio = 0.3;
+  ConstraintBuilder builder(options);
   EXPECT_FALSE(builder.ShouldSearch(0, Rigid2d()));  // not finished yet
   builder.AddFinishedSubmap(0, scene.grid);
   builder.AddFinishedSubmap(1, scene.grid);

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 #include <type_traits>
+#include <utility>
 
 #include "scout/grid/probability_values.h"
 
@@ -26,18 +27,31 @@ uint8_t ToCoarse(uint16_t value) {
                               grid::kMaxValue);
 }
 
-// Sum of the values of 'level' under 'cells' shifted by (x, y); cells outside
-// count as 'floor'. Cells wholly inside (known from the scan's bounds) skip
-// the per-cell check, the common case near a match.
-template <typename T>
+// Level 0 reads the grid's raw values: the update marker bit masked off and
+// unknown (0) counted as the floor, branch-free.
+struct DecodeRaw {
+  int64_t operator()(uint16_t v) const {
+    const int value = v & grid::kMaxValue;
+    return value + (value == grid::kUnknownValue);
+  }
+};
+struct AsIs {
+  int64_t operator()(uint8_t v) const { return v; }
+};
+
+// Sum of the decoded values of a level under 'cells' shifted by (x, y); cells
+// outside count as 'floor'. Cells wholly inside (known from the scan's
+// bounds) skip the per-cell check, the common case near a match.
+template <typename T, typename Decode>
 int64_t SumCells(const T* values, int offset, int width, int height,
-                 const std::vector<grid::CellIndex>& cells, bool inside, int x, int y, T floor) {
+                 const std::vector<grid::CellIndex>& cells, bool inside, int x, int y,
+                 int64_t floor, Decode decode) {
   int64_t sum = 0;
   const int dx = x + offset;
   const int dy = y + offset;
   if (inside) {
     for (const grid::CellIndex& cell : cells) {
-      sum += values[static_cast<size_t>(cell.y + dy) * width + (cell.x + dx)];
+      sum += decode(values[static_cast<size_t>(cell.y + dy) * width + (cell.x + dx)]);
     }
     return sum;
   }
@@ -47,10 +61,11 @@ int64_t SumCells(const T* values, int offset, int width, int height,
     sum += (static_cast<unsigned>(sx) >= static_cast<unsigned>(width) ||
             static_cast<unsigned>(sy) >= static_cast<unsigned>(height))
                ? floor
-               : values[static_cast<size_t>(sy) * width + sx];
+               : decode(values[static_cast<size_t>(sy) * width + sx]);
   }
   return sum;
 }
+
 constexpr int kMidValue = (1 + grid::kMaxValue) / 2;  // decodes to 0.5
 constexpr double kProbabilityPerValue =
     (0.9 - 0.1) /  // the exact bounds behind kMinProbability and kMaxProbability
@@ -102,14 +117,24 @@ double AngularSearchStep(double max_range_m, double resolution_m) {
 
 FastCorrelativeScanMatcher::FastCorrelativeScanMatcher(
     const grid::ProbabilityGrid& grid, const FastCorrelativeScanMatcherOptions& options)
-    : options_(options), limits_(grid.limits()) {
+    : FastCorrelativeScanMatcher(std::make_shared<const grid::ProbabilityGrid>(grid), options) {}
+
+FastCorrelativeScanMatcher::FastCorrelativeScanMatcher(
+    std::shared_ptr<const grid::ProbabilityGrid> grid,
+    const FastCorrelativeScanMatcherOptions& options)
+    : options_(options), grid_(std::move(grid)) {
   Validate(options);
-  exact_.width = limits_.width();
-  exact_.height = limits_.height();
-  exact_.values.resize(grid.values().size());
-  for (size_t i = 0; i < exact_.values.size(); ++i) {
-    const uint16_t v = grid.values()[i] & grid::kMaxValue;
-    exact_.values[i] = v == grid::kUnknownValue ? kFloorValue : v;
+  if (grid_ == nullptr) {
+    throw std::invalid_argument("FastCorrelativeScanMatcher: null grid");
+  }
+  limits_ = grid_->limits();
+  // Decoded level 0, needed only while pooling level 1.
+  PrecomputedGrid<uint16_t> exact;
+  exact.width = limits_.width();
+  exact.height = limits_.height();
+  exact.values.resize(grid_->values().size());
+  for (size_t i = 0; i < exact.values.size(); ++i) {
+    exact.values[i] = static_cast<uint16_t>(DecodeRaw()(grid_->values()[i]));
   }
   // Level d from level d - 1: a 2^d window is the union of four 2^(d-1)
   // windows, so each level costs four lookups per cell. Rounding up commutes
@@ -142,7 +167,7 @@ FastCorrelativeScanMatcher::FastCorrelativeScanMatcher(
   };
   for (int d = 1; d < options.branch_and_bound_depth; ++d) {
     if (d == 1) {
-      coarse_.push_back(pool(exact_, d, ToCoarse));
+      coarse_.push_back(pool(exact, d, ToCoarse));
     } else {
       coarse_.push_back(pool(coarse_.back(), d, [](uint8_t v) { return v; }));
     }
@@ -152,16 +177,16 @@ FastCorrelativeScanMatcher::FastCorrelativeScanMatcher(
 int64_t FastCorrelativeScanMatcher::Score(int depth, const DiscreteScan& scan, int x, int y) const {
   if (depth == 0) {
     const bool inside = scan.min_x + x >= 0 && scan.min_y + y >= 0 &&
-                        scan.max_x + x < exact_.width && scan.max_y + y < exact_.height;
-    return SumCells(exact_.values.data(), 0, exact_.width, exact_.height, scan.cells, inside, x, y,
-                    kFloorValue);
+                        scan.max_x + x < limits_.width() && scan.max_y + y < limits_.height();
+    return SumCells(grid_->values().data(), 0, limits_.width(), limits_.height(), scan.cells,
+                    inside, x, y, kFloorValue, DecodeRaw());
   }
   const PrecomputedGrid<uint8_t>& level = coarse_[depth - 1];
   const bool inside = scan.min_x + x + level.offset >= 0 && scan.min_y + y + level.offset >= 0 &&
                       scan.max_x + x + level.offset < level.width &&
                       scan.max_y + y + level.offset < level.height;
   const int64_t sum = SumCells(level.values.data(), level.offset, level.width, level.height,
-                               scan.cells, inside, x, y, kCoarseFloor);
+                               scan.cells, inside, x, y, kCoarseFloor, AsIs());
   // Back to level 0 units, rounded up so the bound stays a bound.
   return (sum * grid::kMaxValue + kMaxCoarse - 1) / kMaxCoarse;
 }

@@ -2,6 +2,7 @@
 #define SCOUT_SLAM_FAST_CORRELATIVE_SCAN_MATCHER_H_
 
 #include <cstdint>
+#include <memory>
 #include <numbers>
 #include <optional>
 #include <vector>
@@ -43,9 +44,12 @@ double AngularSearchStep(double max_range_m, double resolution_m);
 // of that set (an exhaustive search would find the same score).
 class FastCorrelativeScanMatcher {
  public:
-  // Precomputes the max-pooled grids of 'grid' (kept by value/copy of what is
-  // needed; 'grid' need not outlive this). Throws std::invalid_argument on
-  // invalid options.
+  // Precomputes the max-pooled grids of 'grid' and keeps 'grid' itself as the
+  // finest level (shared, not copied: the caller usually keeps it anyway).
+  // Throws std::invalid_argument on invalid options or a null grid.
+  FastCorrelativeScanMatcher(std::shared_ptr<const grid::ProbabilityGrid> grid,
+                             const FastCorrelativeScanMatcherOptions& options);
+  // As above with a copy of 'grid' ('grid' need not outlive this).
   FastCorrelativeScanMatcher(const grid::ProbabilityGrid& grid,
                              const FastCorrelativeScanMatcherOptions& options);
 
@@ -65,7 +69,7 @@ class FastCorrelativeScanMatcher {
   // Level d holds, for every cell c, the max raw value over the cells
   // [c.x, c.x + 2^d) x [c.y, c.y + 2^d) of the grid; cells are offset by
   // 2^d - 1 so that windows reaching into the grid from below are stored too.
-  // Level 0 keeps the exact 15-bit values, so leaves score exactly. Levels
+  // Level 0 is the grid itself, so leaves score exactly. Levels
   // >= 1 only bound scores from above, and a byte per cell does (rounded up
   // to 1/255 of the value range): half the memory of 16 bits, and the coarse
   // levels, read most often, stay in cache better.
@@ -93,8 +97,8 @@ class FastCorrelativeScanMatcher {
   // level 0 units (an upper bound at depth >= 1, exact at depth 0).
   int64_t Score(int depth, const DiscreteScan& scan, int x, int y) const;
 
-  PrecomputedGrid<uint16_t> exact_;
-  std::vector<PrecomputedGrid<uint8_t>> coarse_;  // coarse_[d - 1] is level d
+  std::shared_ptr<const grid::ProbabilityGrid> grid_;  // level 0, read as is
+  std::vector<PrecomputedGrid<uint8_t>> coarse_;       // coarse_[d - 1] is level d
 };
 
 }  // namespace scout::slam

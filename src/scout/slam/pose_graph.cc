@@ -28,6 +28,10 @@ void Validate(const PoseGraphOptions& options) {
     throw std::invalid_argument("pose_graph option 'optimize_every_n_nodes': expected >= 0, got " +
                                 std::to_string(options.optimize_every_n_nodes));
   }
+  if (options.skip_neighbour_submaps < 0) {
+    throw std::invalid_argument("pose_graph option 'skip_neighbour_submaps': expected >= 0, got " +
+                                std::to_string(options.skip_neighbour_submaps));
+  }
   RequirePositive("intra_submap_translation_weight", options.intra_submap_translation_weight);
   RequirePositive("intra_submap_rotation_weight", options.intra_submap_rotation_weight);
   Validate(options.loop_closure_voxel_filter);
@@ -125,7 +129,8 @@ void PoseGraph::ComputeConstraints(int node_id, const std::vector<int>& newly_fi
   // set is the same whether this step runs late (background) or at once.
   std::vector<int> finished_before;
   for (int submap_id = 0; submap_id < num_submaps; ++submap_id) {
-    if (constraint_builder_.HasSubmap(submap_id) && !Contains(node_submaps, submap_id)) {
+    if (constraint_builder_.HasSubmap(submap_id) && !Contains(node_submaps, submap_id) &&
+        !IsNeighbour(node_submaps, submap_id)) {
       finished_before.push_back(submap_id);
     }
   }
@@ -135,17 +140,28 @@ void PoseGraph::ComputeConstraints(int node_id, const std::vector<int>& newly_fi
   // nodes will meet it in their own step above.
   for (int submap_id : newly_finished) {
     std::shared_ptr<const grid::ProbabilityGrid> grid;
-    std::vector<int> members;
+    std::vector<int> candidates;
     {
       std::lock_guard<std::mutex> lock(mutex_);
       grid = submaps_[submap_id].state.grid;
-      members = submaps_[submap_id].node_ids;
+      const std::vector<int>& members = submaps_[submap_id].node_ids;
+      for (int other = 0; other <= node_id; ++other) {
+        const std::vector<int>& other_submaps = nodes_[other].submap_ids;
+        if (!Contains(members, other) && !IsNeighbour(other_submaps, submap_id)) {
+          candidates.push_back(other);
+        }
+      }
     }
     constraint_builder_.AddFinishedSubmap(submap_id, std::move(grid));
-    for (int other = 0; other <= node_id; ++other) {
-      if (!Contains(members, other)) SearchPair(other, submap_id);
-    }
+    for (int other : candidates) SearchPair(other, submap_id);
   }
+}
+
+bool PoseGraph::IsNeighbour(const std::vector<int>& node_submaps, int submap_id) const {
+  for (int id : node_submaps) {
+    if (std::abs(id - submap_id) <= options_.skip_neighbour_submaps) return true;
+  }
+  return false;
 }
 
 void PoseGraph::SearchPair(int node_id, int submap_id) {

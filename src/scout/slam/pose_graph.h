@@ -32,6 +32,13 @@ struct PoseGraphOptions {
   // branch and bound costs grow with the number of points.
   AdaptiveVoxelFilterOptions loop_closure_voxel_filter{
       .max_length_m = 0.9, .min_num_points = 100, .max_range_m = 50.0};
+  // Loop closures are not searched between a node and a finished submap whose
+  // id is within this many of one of the node's insertion submaps (0: search
+  // every pair). Local SLAM already ties such pairs rigidly through the
+  // overlapping submaps, so a match there adds little but costs a full search.
+  // fr079 bag: 2 (with sampling_ratio 0.05) cut searches 30,563 -> 4,475 at
+  // ATE 0.086 -> 0.089 m.
+  int skip_neighbour_submaps = 2;
   ConstraintBuilderOptions constraint_builder;
   OptimizationProblemOptions optimization_problem;
 };
@@ -125,6 +132,8 @@ class PoseGraph {
   // Background steps, run in scheduling order by work_queue_.
   void ComputeConstraints(int node_id, const std::vector<int>& newly_finished);
   void SearchPair(int node_id, int submap_id);
+  // True if 'submap_id' is a trajectory neighbour of a submap in 'node_submaps'.
+  bool IsNeighbour(const std::vector<int>& node_submaps, int submap_id) const;
   void Optimize(int num_nodes, int num_submaps);
 
   const PoseGraphOptions options_;

@@ -113,9 +113,14 @@ Outcome Feed(const PoseGraphOptions& options, const std::vector<NodeInput>& run 
   return out;
 }
 
+// Dense loop-closure search (Cartographer's 0.3, every pair): the drive here is
+// one short lap, far fewer nodes per submap than the long logs the sparser
+// defaults are measured on, and these tests check the graph, not the sampling.
 PoseGraphOptions Synchronous() {
   PoseGraphOptions options;
   options.synchronous = true;
+  options.skip_neighbour_submaps = 0;
+  options.constraint_builder.sampling_ratio = 0.3;
   return options;
 }
 
@@ -196,7 +201,9 @@ TEST(PoseGraphTest, SynchronousModeIsDeterministic) {
 
 TEST(PoseGraphTest, BackgroundModeMatchesSynchronousMode) {
   const Outcome sync = Feed(Synchronous());
-  const Outcome background = Feed(PoseGraphOptions{});
+  PoseGraphOptions background_options = Synchronous();
+  background_options.synchronous = false;
+  const Outcome background = Feed(background_options);
   EXPECT_EQ(background.stats.num_loop_closures, sync.stats.num_loop_closures);
   EXPECT_EQ(background.stats.num_optimizations, sync.stats.num_optimizations);
   ASSERT_EQ(background.nodes.size(), sync.nodes.size());
@@ -231,6 +238,30 @@ TEST(PoseGraphTest, NodesAddedAfterASolveFollowTheCorrection) {
     // And the correction helps: the new nodes are near the truth.
     EXPECT_LT((poses[i].pose.translation() - run[i].truth.translation()).norm(), 0.3);
   }
+}
+
+TEST(PoseGraphTest, SkipsNeighbourSubmapsWhenAsked) {
+  const auto& run = DriveRun();
+  PoseGraphOptions dense = Synchronous();
+  PoseGraphOptions sparse = Synchronous();
+  sparse.skip_neighbour_submaps = 2;
+  PoseGraph all(dense, nullptr), skipping(sparse, nullptr);
+  for (const NodeInput& node : run) {
+    all.AddNode(node.time_s, node.local_pose, node.points, node.submaps);
+    skipping.AddNode(node.time_s, node.local_pose, node.points, node.submaps);
+  }
+  EXPECT_LT(skipping.GetStats().num_searches, all.GetStats().num_searches);
+  for (const Constraint& c : skipping.GetConstraints()) {
+    if (c.kind != ConstraintKind::kInterSubmap) continue;
+    for (const Constraint& intra : skipping.GetConstraints()) {
+      if (intra.kind == ConstraintKind::kIntraSubmap && intra.node_id == c.node_id) {
+        EXPECT_GT(std::abs(intra.submap_id - c.submap_id), 2);
+      }
+    }
+  }
+  PoseGraphOptions negative = Synchronous();
+  negative.skip_neighbour_submaps = -1;
+  EXPECT_THROW(PoseGraph(negative, nullptr), std::invalid_argument);
 }
 
 TEST(PoseGraphTest, RejectsGapsInSubmapIdsAndMissingGrids) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -68,18 +69,37 @@ ScanMatchResult RealTimeCorrelativeScanMatcher::Match(
   const double probability_per_value =
       (grid::ValueToProbability(grid::kMaxValue) - min_probability) / (grid::kMaxValue - 1);
 
+  // Raw value with unknown as 1, without the bounds check (the caller knows
+  // the cell is inside): branch-free, as most candidates lie wholly inside.
+  const auto inside_value = [&](int x, int y) -> int64_t {
+    const int v = values[static_cast<size_t>(y) * limits.width() + x] & grid::kMaxValue;
+    return v + (v == grid::kUnknownValue);
+  };
+
   std::vector<grid::CellIndex> cells(points.size());
   for (int k = -num_angles_each_side; k <= num_angles_each_side; ++k) {
     const double delta_angle = k * angle_step;
     const geometry::Rigid2d rotated(initial_pose_estimate.translation(),
                                     initial_pose_estimate.theta() + delta_angle);
     // Discretize once per angle; translations only shift cell indices.
-    for (size_t i = 0; i < points.size(); ++i)
+    int min_x = std::numeric_limits<int>::max(), max_x = std::numeric_limits<int>::min();
+    int min_y = min_x, max_y = max_x;
+    for (size_t i = 0; i < points.size(); ++i) {
       cells[i] = limits.CellContaining(rotated * points[i]);
+      min_x = std::min(min_x, cells[i].x);
+      max_x = std::max(max_x, cells[i].x);
+      min_y = std::min(min_y, cells[i].y);
+      max_y = std::max(max_y, cells[i].y);
+    }
     for (int x = -linear_bound; x <= linear_bound; ++x) {
       for (int y = -linear_bound; y <= linear_bound; ++y) {
         int64_t sum = 0;
-        for (const grid::CellIndex& cell : cells) sum += raw_value(cell.x + x, cell.y + y);
+        if (min_x + x >= 0 && min_y + y >= 0 && max_x + x < limits.width() &&
+            max_y + y < limits.height()) {
+          for (const grid::CellIndex& cell : cells) sum += inside_value(cell.x + x, cell.y + y);
+        } else {
+          for (const grid::CellIndex& cell : cells) sum += raw_value(cell.x + x, cell.y + y);
+        }
         const double mean_probability =
             min_probability +
             (static_cast<double>(sum) / static_cast<double>(points.size()) - 1.0) *
