@@ -164,4 +164,39 @@ TEST_F(ScoutCli, ReportAndCompareRedrawFromTheOutputFiles) {
   EXPECT_FALSE(fs::exists(dir_ / "cmp2"));
 }
 
+TEST_F(ScoutCli, ResultsTablePrintsMarkdownAndRejectsMissingSummary) {
+  const fs::path run = dir_ / "run";
+  ASSERT_EQ(RunScout("frontier-bench --quiet --world " + (dir_ / "rooms.yaml").string() +
+                     " --seed 3 --strategies full,dfd,exact --out " + run.string())
+                .exit_code,
+            0);
+  std::ofstream(run / "command.txt") << "scout frontier-bench --seed 3\n";
+  Result r = RunScout("results-table --kind bench " + run.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("```sh\nscout frontier-bench --seed 3\n```"), std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("| run | 0.05 | exact |"), std::string::npos) << r.output;
+  fs::remove(run / "summary.json");
+  r = RunScout("results-table --kind bench " + run.string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("no summary.json"), std::string::npos) << r.output;
+  r = RunScout("results-table --kind tables " + run.string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+}
+
+TEST_F(ScoutCli, WorldSizeIsValidated) {
+  // A recorded map cannot be resized; malformed and too small sizes name the problem.
+  Result r = RunScout("frontier-bench --world " + (dir_ / "rooms.yaml").string() +
+                      " --world-size 50 --out " + (dir_ / "a").string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("only the generated office and museum"), std::string::npos) << r.output;
+  r = RunScout("frontier-bench --world museum --world-size 50y50 --out " + (dir_ / "b").string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("50y50"), std::string::npos) << r.output;
+  r = RunScout("explore --world office --world-size 10 --out " + (dir_ / "c").string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("width_m"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(dir_ / "a") || fs::exists(dir_ / "b") || fs::exists(dir_ / "c"));
+}
+
 }  // namespace

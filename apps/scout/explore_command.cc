@@ -102,11 +102,17 @@ nlohmann::json Summary(const ExploreArgs& args, const exploration::ExplorationLo
   s["time_to_coverage_s"] = {{"0.90", OptionalSeconds(r.time_to_coverage_s[0])},
                              {"0.95", OptionalSeconds(r.time_to_coverage_s[1])},
                              {"0.99", OptionalSeconds(r.time_to_coverage_s[2])}};
-  s["goals"] = {
-      {"issued", r.counters.goals_issued},       {"reached", r.counters.goals_reached},
-      {"failed", r.counters.goals_failed},       {"unreachable", r.unreachable_goals},
-      {"no_plan", r.counters.goals_unreachable}, {"superseded", r.counters.goals_superseded},
-      {"retried", r.counters.goals_retried}};
+  s["goals"] = {{"issued", r.counters.goals_issued},
+                {"reached", r.counters.goals_reached},
+                {"failed", r.counters.goals_failed},
+                {"unreachable", r.unreachable_goals},
+                {"no_plan", r.counters.goals_unreachable},
+                {"superseded", r.counters.goals_superseded},
+                {"seen_before_arrival", r.counters.goals_seen},
+                {"dropped", r.counters.goals_dropped},
+                {"retried", r.counters.goals_retried},
+                {"escapes", r.counters.escapes},
+                {"frontier_left", r.frontier_left}};
   s["returned_home"] = r.returned_home;
   s["collisions"] = r.collisions;
   s["ate_rmse_m"] = ate_rmse_m;
@@ -158,6 +164,8 @@ CLI::App* AddExploreCommand(CLI::App& app, ExploreArgs* args) {
       "navigation points and path following");
   cmd->add_option("--world", args->world, "office, museum (generated) or a map_server .yaml")
       ->capture_default_str();
+  cmd->add_option("--world-size", args->world_size,
+                  "outer extent of a generated world, W or WxH metres (default: the generator's)");
   cmd->add_option("--seed", args->seed, "seed of the generated world and the sensor noise")
       ->capture_default_str();
   cmd->add_option("--out", args->out_dir, "output directory")->capture_default_str();
@@ -179,7 +187,10 @@ int RunExplore(const ExploreArgs& args) {
   const frontier::Stopwatch wall;
   // Everything that can be wrong with the input is found before any output.
   const exploration::ExplorationOptions options = MakeOptions(args);
-  const sim::World world = sim::MakeWorld(args.world, args.seed);
+  const std::optional<sim::WorldSize> world_size =
+      args.world_size.empty() ? std::nullopt
+                              : std::optional<sim::WorldSize>(sim::ParseWorldSize(args.world_size));
+  const sim::World world = sim::MakeWorld(args.world, args.seed, world_size);
   exploration::ExplorationLoop loop(world, options, args.seed);
   io::OutputDirectory out(args.out_dir);
 

@@ -27,6 +27,8 @@ CLI::App* AddFrontierBenchCommand(CLI::App& app, FrontierBenchArgs* args) {
       "score them against full recomputation");
   cmd->add_option("--world", args->world, "office, museum, or a ROS map_server .yaml file")
       ->capture_default_str();
+  cmd->add_option("--world-size", args->world_size,
+                  "outer extent of a generated world, W or WxH metres (default: the generator's)");
   cmd->add_option("--seed", args->seed, "seed of the world, trajectory, sensor noise and drift")
       ->capture_default_str();
   cmd->add_option("--out", args->out_dir, "output directory")->capture_default_str();
@@ -53,7 +55,10 @@ int RunFrontierBench(const FrontierBenchArgs& args) {
   // Validates options and names before any long work or any output.
   frontier::FrontierEngine engine(config.frontier, strategies, /*evaluate=*/true);
   engine.strategy(args.picture_strategy);
-  const sim::World world = sim::MakeWorld(args.world, args.seed);
+  const std::optional<sim::WorldSize> world_size =
+      args.world_size.empty() ? std::nullopt
+                              : std::optional<sim::WorldSize>(sim::ParseWorldSize(args.world_size));
+  const sim::World world = sim::MakeWorld(args.world, args.seed, world_size);
   io::OutputDirectory out(args.out_dir);
 
   const bool terminal = !args.quiet && ::isatty(STDERR_FILENO);
@@ -74,6 +79,7 @@ int RunFrontierBench(const FrontierBenchArgs& args) {
   nlohmann::json summary;
   summary["world"] = args.world;
   summary["seed"] = args.seed;
+  if (world_size) summary["world_size_m"] = {world_size->width_m, world_size->height_m};
   summary["submaps"] = engine.catalog().size();
   summary["optimizations"] = engine.optimizations();
   summary["local_frontier_points"] = engine.catalog().total_points();

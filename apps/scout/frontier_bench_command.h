@@ -10,6 +10,7 @@ namespace scout::apps {
 
 struct FrontierBenchArgs {
   std::string world = "office";
+  std::string world_size;  // "W" or "WxH" metres; empty: the generator's default
   uint64_t seed = 1;
   std::string out_dir = "out/frontier-bench";
   std::string config_file;

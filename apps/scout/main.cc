@@ -11,6 +11,7 @@
 #include "apps/scout/frontier_bench_command.h"
 #include "apps/scout/replay_command.h"
 #include "apps/scout/report_command.h"
+#include "apps/scout/results_table_command.h"
 #include "scout/common/error.h"
 
 int main(int argc, char** argv) {
@@ -27,6 +28,8 @@ int main(int argc, char** argv) {
   CLI::App* replay = scout::apps::AddReplayCommand(app, &replay_args);
   scout::apps::ExploreArgs explore_args;
   CLI::App* explore = scout::apps::AddExploreCommand(app, &explore_args);
+  scout::apps::ResultsTableArgs table_args;
+  CLI::App* table = scout::apps::AddResultsTableCommand(app, &table_args);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -45,6 +48,7 @@ int main(int argc, char** argv) {
     if (compare->parsed()) return scout::apps::RunCompare(compare_args);
     if (replay->parsed()) return scout::apps::RunReplay(replay_args);
     if (explore->parsed()) return scout::apps::RunExplore(explore_args);
+    if (table->parsed()) return scout::apps::RunResultsTable(table_args);
   } catch (const scout::InputError& e) {
     std::cerr << "scout: error: " << e.what() << "\n";
     return 2;

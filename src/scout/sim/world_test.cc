@@ -108,5 +108,52 @@ TEST(MakeWorld, UnknownNameIsAnInputError) {
   EXPECT_THROW(MakeWorld("/no/such/map.yaml", 1), InputError);
 }
 
+TEST(MakeWorld, SizeScalesGeneratedWorlds) {
+  for (const char* name : {"office", "museum"}) {
+    const World w = MakeWorld(name, 1, WorldSize{60.0, 45.0});
+    // The map covers the building, walls included (to within a cell or two).
+    EXPECT_NEAR(w.map.limits.width() * w.map.limits.resolution(), 60.0, 0.2) << name;
+    EXPECT_NEAR(w.map.limits.height() * w.map.limits.resolution(), 45.0, 0.2) << name;
+  }
+}
+
+TEST(MakeWorld, SizeTooSmallNamesTheOption) {
+  try {
+    MakeWorld("museum", 1, WorldSize{5.0, 100.0});
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("width_m"), std::string::npos) << e.what();
+  }
+  try {
+    MakeWorld("office", 1, WorldSize{40.0, 4.0});
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("height_m"), std::string::npos) << e.what();
+  }
+}
+
+TEST(MakeWorld, SizeOfAMapFileIsAnInputError) {
+  const TempDirectory dir;
+  const std::filesystem::path yaml = dir.path() / "rooms.yaml";
+  grid::WriteMapServerMap(MakeTwoRoomMap(), yaml);
+  EXPECT_THROW(MakeWorld(yaml.string(), 1, WorldSize{50.0, 50.0}), InputError);
+}
+
+TEST(ParseWorldSize, SquareAndRectangle) {
+  const WorldSize square = ParseWorldSize("100");
+  EXPECT_DOUBLE_EQ(square.width_m, 100.0);
+  EXPECT_DOUBLE_EQ(square.height_m, 100.0);
+  const WorldSize rect = ParseWorldSize("160x100.5");
+  EXPECT_DOUBLE_EQ(rect.width_m, 160.0);
+  EXPECT_DOUBLE_EQ(rect.height_m, 100.5);
+}
+
+TEST(ParseWorldSize, MalformedIsAnInputError) {
+  for (const char* bad :
+       {"", "x", "0", "-5", "10x", "x10", "10x0", "10y10", "nan", "inf", "1e400", "10x10x10"}) {
+    EXPECT_THROW(ParseWorldSize(bad), InputError) << bad;
+  }
+}
+
 }  // namespace
 }  // namespace scout::sim

@@ -1,0 +1,301 @@
+#include "scout/report/results_tables.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <optional>
+#include <sstream>
+
+#include "scout/common/error.h"
+#include "scout/report/run_data.h"
+
+namespace scout::report {
+namespace {
+
+using Json = nlohmann::json;
+using Row = std::vector<std::string>;
+
+constexpr const char* kMissing = "—";
+
+// The number at 'path' (keys separated by '/') in 'j', if there is one.
+std::optional<double> Number(const Json& j, const std::string& path) {
+  const Json* node = &j;
+  std::istringstream keys(path);
+  std::string key;
+  while (std::getline(keys, key, '/')) {
+    if (!node->is_object() || !node->contains(key)) return std::nullopt;
+    node = &(*node)[key];
+  }
+  if (!node->is_number()) return std::nullopt;
+  return node->get<double>();
+}
+
+std::string Text(const Json& j, const std::string& key) {
+  if (!j.is_object() || !j.contains(key)) return kMissing;
+  const Json& v = j[key];
+  if (v.is_string()) return v.get<std::string>();
+  if (v.is_null()) return kMissing;
+  return v.dump();
+}
+
+std::string Fixed(std::optional<double> v, int decimals) {
+  if (!v || !std::isfinite(*v)) return kMissing;
+  char buffer[64];
+  std::snprintf(buffer, sizeof(buffer), "%.*f", decimals, *v);
+  return buffer;
+}
+
+// Integers with thousands separators, as in the README's tables.
+std::string Count(std::optional<double> v) {
+  if (!v || !std::isfinite(*v)) return kMissing;
+  const long long n = std::llround(*v);
+  std::string digits = std::to_string(n < 0 ? -n : n);
+  for (int i = static_cast<int>(digits.size()) - 3; i > 0; i -= 3) digits.insert(i, ",");
+  return (n < 0 ? "-" : "") + digits;
+}
+
+// Fractions as percent; accuracy-like values need 3 decimals to show errors.
+std::string Percent(std::optional<double> v, int decimals) {
+  if (!v || !std::isfinite(*v)) return kMissing;
+  return Fixed(*v * 100.0, decimals) + " %";
+}
+
+void AppendTable(const Row& header, const std::vector<Row>& rows, std::ostringstream& out) {
+  const auto line = [&out](const Row& cells) {
+    out << '|';
+    for (const std::string& c : cells) out << ' ' << c << " |";
+    out << '\n';
+  };
+  line(header);
+  out << '|';
+  for (size_t i = 0; i < header.size(); ++i) out << "---|";
+  out << '\n';
+  for (const Row& r : rows) line(r);
+  out << '\n';
+}
+
+std::string CommandOf(const std::filesystem::path& dir) {
+  std::ifstream in(dir / "command.txt");
+  if (!in) return "(command not recorded) # " + dir.string();
+  std::string command;
+  std::getline(in, command);
+  return command.empty() ? "(command not recorded) # " + dir.string() : command;
+}
+
+std::vector<RunData> ReadRuns(const std::vector<std::filesystem::path>& dirs,
+                              std::ostringstream& out) {
+  if (dirs.empty()) throw InputError("results tables: no output directories given");
+  std::vector<RunData> runs;
+  out << "```sh\n";
+  for (const std::filesystem::path& dir : dirs) {
+    if (!std::filesystem::is_regular_file(dir / "summary.json")) {
+      throw InputError(dir.string() +
+                       ": no summary.json (the run did not finish, or this is "
+                       "not a Scout output directory)");
+    }
+    runs.push_back(ReadRun(dir));
+    out << CommandOf(dir) << '\n';
+  }
+  out << "```\n\n";
+  return runs;
+}
+
+// Optimisation rounds a strategy took part in: frontier.csv rows, else the
+// summary's count.
+std::optional<double> Rounds(const RunData& run, const std::string& strategy) {
+  int64_t n = 0;
+  for (const FrontierRound& r : run.rounds) n += r.strategy == strategy ? 1 : 0;
+  if (n > 0 || !run.rounds.empty()) return static_cast<double>(n);
+  if (auto v = Number(run.summary, "optimizations")) return v;
+  return Number(run.summary, "slam/optimizations");
+}
+
+// One row per run and strategy: the paper's figures plus the cost per round.
+void AppendStrategyTable(const std::vector<RunData>& runs, bool with_epsilon,
+                         std::ostringstream& out) {
+  Row header = {"run",       "strategy", "rounds",      "points re-queried",
+                "per round", "P",        "accuracy",    "wrong answers",
+                "precision", "recall",   "ms per round"};
+  if (with_epsilon) header.insert(header.begin() + 1, "ε m");
+  std::vector<Row> rows;
+  for (const RunData& run : runs) {
+    const Json* strategies = nullptr;
+    if (run.summary.contains("frontier") && run.summary["frontier"].contains("strategies")) {
+      strategies = &run.summary["frontier"]["strategies"];
+    }
+    if (strategies == nullptr || !strategies->is_object()) continue;
+    // Summary order is alphabetical; the README's order reads better.
+    std::vector<std::string> names;
+    for (const char* known : {"full", "dfd", "bfs", "direct", "exact"}) {
+      if (strategies->contains(known)) names.push_back(known);
+    }
+    for (const auto& [name, unused] : strategies->items()) {
+      if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+    }
+    for (const std::string& name : names) {
+      const Json& s = (*strategies)[name];
+      const std::optional<double> rounds = Rounds(run, name);
+      const auto per_round = [&](const std::string& key) -> std::optional<double> {
+        const std::optional<double> total = Number(s, key);
+        if (!total || !rounds || *rounds <= 0) return std::nullopt;
+        return *total / *rounds;
+      };
+      std::optional<double> wrong;
+      if (auto fp = Number(s, "fp"), fn = Number(s, "fn"); fp && fn) wrong = *fp + *fn;
+      Row row = {run.name,
+                 name,
+                 Count(rounds),
+                 Count(Number(s, "queried_points")),
+                 Count(per_round("queried_points")),
+                 Percent(Number(s, "P"), 1),
+                 Percent(Number(s, "accuracy"), 4),
+                 Count(wrong),
+                 Percent(Number(s, "precision"), 3),
+                 Percent(Number(s, "recall"), 3),
+                 Fixed(per_round("time_ms"), 3)};
+      if (with_epsilon) row.insert(row.begin() + 1, Fixed(Number(run.summary, "epsilon_m"), 2));
+      rows.push_back(row);
+    }
+  }
+  AppendTable(header, rows, out);
+}
+
+void AppendReplay(const std::vector<RunData>& runs, std::ostringstream& out) {
+  std::vector<Row> rows;
+  for (const RunData& run : runs) {
+    const Json& s = run.summary;
+    const auto pair = [&](const std::string& trans, const std::string& rot) {
+      const std::optional<double> t = Number(s, trans), r = Number(s, rot);
+      return t && r ? Fixed(t, 3) + " / " + Fixed(r, 2) : std::string(kMissing);
+    };
+    rows.push_back(
+        {run.name, Text(s, "dataset"), Fixed(Number(s, "odom_noise"), 1), Count(Number(s, "scans")),
+         Fixed(Number(s, "data_duration_s"), 0), Fixed(Number(s, "wall_time_s"), 0),
+         Fixed(Number(s, "realtime_factor"), 2), Fixed(Number(s, "peak_rss_mb"), 0),
+         Count(Number(s, "slam/submaps")), Count(Number(s, "slam/loop_closures")),
+         Count(Number(s, "reference/matched_scans")), Fixed(Number(s, "reference/ate_rmse_m"), 3),
+         pair("reference/rpe_1s_trans_m", "reference/rpe_1s_rot_deg"),
+         pair("reference/rpe_10s_trans_m", "reference/rpe_10s_rot_deg")});
+  }
+  AppendTable({"run", "dataset", "odom noise", "scans", "data s", "wall s", "× real time",
+               "peak RSS MiB", "submaps", "loop closures", "matched scans", "ATE RMSE m",
+               "RPE 1 s m / °", "RPE 10 s m / °"},
+              rows, out);
+  AppendStrategyTable(runs, /*with_epsilon=*/false, out);
+}
+
+void AppendBench(const std::vector<RunData>& runs, std::ostringstream& out) {
+  std::vector<Row> rows;
+  for (const RunData& run : runs) {
+    const Json& s = run.summary;
+    std::string size = kMissing;
+    if (s.contains("world_size_m") && s["world_size_m"].is_array() &&
+        s["world_size_m"].size() == 2) {
+      size = Fixed(s["world_size_m"][0].get<double>(), 0) + " × " +
+             Fixed(s["world_size_m"][1].get<double>(), 0);
+    }
+    rows.push_back({run.name, Text(s, "world"), size, Text(s, "seed"),
+                    Fixed(Number(s, "epsilon_m"), 2), Count(Number(s, "scans")),
+                    Count(Number(s, "submaps")), Count(Number(s, "optimizations")),
+                    Count(Number(s, "loop_closures")), Count(Number(s, "local_frontier_points")),
+                    Fixed(Number(s, "wall_time_s"), 0)});
+  }
+  AppendTable({"run", "world", "size m", "seed", "ε m", "scans", "submaps", "optimisations",
+               "loop closures", "local frontier points", "wall s"},
+              rows, out);
+  AppendStrategyTable(runs, /*with_epsilon=*/true, out);
+}
+
+// Path length when coverage first reached 'level', from coverage.csv.
+std::optional<double> PathToCoverage(const RunData& run, double level) {
+  for (const CoverageSample& c : run.coverage) {
+    if (c.coverage >= level) return c.path_length_m;
+  }
+  return std::nullopt;
+}
+
+void AppendExplore(const std::vector<RunData>& runs, std::ostringstream& out) {
+  std::vector<Row> rows;
+  struct Group {
+    int runs = 0, reached = 0;
+    double coverage = 0.0, min_coverage = 1.0, path_99 = 0.0, time_99 = 0.0;
+    double unreachable = 0.0, collisions = 0.0;
+  };
+  std::vector<std::pair<std::string, std::string>> order;
+  std::map<std::pair<std::string, std::string>, Group> groups;
+  for (const RunData& run : runs) {
+    const Json& s = run.summary;
+    const std::optional<double> path_99 = PathToCoverage(run, 0.99);
+    const std::optional<double> time_99 = Number(s, "time_to_coverage_s/0.99");
+    rows.push_back({run.name, Text(s, "world"), Text(s, "goals_policy"), Text(s, "seed"),
+                    Text(s, "terminated"), Percent(Number(s, "coverage"), 1),
+                    Fixed(Number(s, "path_length_m"), 0), Fixed(path_99, 0),
+                    Fixed(Number(s, "sim_time_s"), 0), Fixed(time_99, 0),
+                    Count(Number(s, "goals/issued")), Count(Number(s, "goals/reached")),
+                    Count(Number(s, "goals/unreachable")), Count(Number(s, "collisions")),
+                    Fixed(Number(s, "wall_time_s"), 0)});
+    const std::pair<std::string, std::string> key{Text(s, "world"), Text(s, "goals_policy")};
+    if (!groups.count(key)) order.push_back(key);
+    Group& g = groups[key];
+    const double coverage = Number(s, "coverage").value_or(0.0);
+    ++g.runs;
+    g.coverage += coverage;
+    g.min_coverage = std::min(g.min_coverage, coverage);
+    g.unreachable += Number(s, "goals/unreachable").value_or(0.0);
+    g.collisions += Number(s, "collisions").value_or(0.0);
+    if (path_99 && time_99) {
+      ++g.reached;
+      g.path_99 += *path_99;
+      g.time_99 += *time_99;
+    }
+  }
+  AppendTable(
+      {"run", "world", "goal policy", "seed", "ended by", "coverage", "path m", "path to 99 % m",
+       "sim s", "sim s to 99 %", "goals", "reached", "unreachable", "collisions", "wall s"},
+      rows, out);
+  std::vector<Row> means;
+  for (const auto& key : order) {
+    const Group& g = groups[key];
+    const auto mean_reached = [&](double sum) -> std::optional<double> {
+      return g.reached > 0 ? std::optional<double>(sum / g.reached) : std::nullopt;
+    };
+    means.push_back({key.first, key.second, std::to_string(g.runs), Percent(g.coverage / g.runs, 1),
+                     Percent(g.min_coverage, 1),
+                     std::to_string(g.reached) + " of " + std::to_string(g.runs),
+                     Fixed(mean_reached(g.path_99), 0), Fixed(mean_reached(g.time_99), 0),
+                     Count(g.unreachable), Count(g.collisions)});
+  }
+  AppendTable({"world", "goal policy", "runs", "mean coverage", "min coverage", "reached 99 %",
+               "mean path to 99 % m", "mean sim s to 99 %", "unreachable goals", "collisions"},
+              means, out);
+}
+
+}  // namespace
+
+TableKind ParseTableKind(const std::string& text) {
+  if (text == "replay") return TableKind::kReplay;
+  if (text == "bench") return TableKind::kBench;
+  if (text == "explore") return TableKind::kExplore;
+  throw InputError("table kind '" + text + "': expected replay, bench or explore");
+}
+
+std::string ResultsTables(TableKind kind, const std::vector<std::filesystem::path>& dirs) {
+  std::ostringstream out;
+  const std::vector<RunData> runs = ReadRuns(dirs, out);
+  switch (kind) {
+    case TableKind::kReplay:
+      AppendReplay(runs, out);
+      break;
+    case TableKind::kBench:
+      AppendBench(runs, out);
+      break;
+    case TableKind::kExplore:
+      AppendExplore(runs, out);
+      break;
+  }
+  return out.str();
+}
+
+}  // namespace scout::report

@@ -1,0 +1,134 @@
+#include "scout/report/results_tables.h"
+
+#include <gtest/gtest.h>
+
+#include "scout/common/atomic_file.h"
+#include "scout/common/error.h"
+#include "scout/report/test_runs.h"
+
+namespace scout::report {
+namespace {
+
+using testing::FreshDir;
+using testing::WriteFrontierRun;
+
+bool Contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+TEST(ResultsTables, BenchShowsCommandValuesAndPerRoundCost) {
+  const std::filesystem::path dir = WriteFrontierRun("tables_bench");
+  WriteTextFileAtomically(dir / "command.txt",
+                          "scout frontier-bench --world office --seed 7 --epsilon 0.1\n");
+  const std::string md = ResultsTables(TableKind::kBench, {dir});
+  EXPECT_TRUE(Contains(md, "```sh\nscout frontier-bench --world office --seed 7 --epsilon 0.1\n"))
+      << md;
+  // The run table: world, seed, epsilon, local frontier points.
+  EXPECT_TRUE(Contains(md, "| tables_bench | office | — | 7 | 0.10 |")) << md;
+  // direct: 40 points over 3 rounds (13 per round), P 88.9 %, one wrong answer,
+  // 0.405 ms / 3 rounds = 0.135 ms per round.
+  EXPECT_TRUE(Contains(md,
+                       "| tables_bench | 0.10 | direct | 3 | 40 | 13 | 88.9 % | 99.7220 % | "
+                       "— | 100.000 % | 99.167 % | 0.135 |"))
+      << md;
+  // Strategies in the README's order, not the summary's alphabetical one.
+  EXPECT_LT(md.find("| full |"), md.find("| dfd |"));
+  EXPECT_LT(md.find("| dfd |"), md.find("| direct |"));
+}
+
+TEST(ResultsTables, ReplayShowsSlamAccuracyAndCost) {
+  const std::filesystem::path dir = FreshDir("tables_replay");
+  WriteTextFileAtomically(dir / "summary.json", R"({
+    "dataset": "intel-corrected", "odom_noise": 1.0, "scans": 910, "data_duration_s": 1200.4,
+    "wall_time_s": 60.2, "realtime_factor": 19.94, "peak_rss_mb": 312.6,
+    "slam": {"submaps": 14, "loop_closures": 52, "optimizations": 9},
+    "reference": {"matched_scans": 905, "ate_rmse_m": 0.0812, "rpe_1s_trans_m": 0.0123,
+                  "rpe_1s_rot_deg": 0.41, "rpe_10s_trans_m": 0.0734, "rpe_10s_rot_deg": 1.27},
+    "frontier": {"strategies": {"exact": {"queried_points": 12345, "time_ms": 90.0,
+      "accuracy": 1.0, "precision": 1.0, "recall": 1.0, "P": 0.8766, "fp": 0, "fn": 0}}}})");
+  WriteTextFileAtomically(dir / "command.txt", "scout replay intel.log.gz --odom-noise 1\n");
+  const std::string md = ResultsTables(TableKind::kReplay, {dir});
+  EXPECT_TRUE(Contains(md, "scout replay intel.log.gz --odom-noise 1\n")) << md;
+  EXPECT_TRUE(Contains(md,
+                       "| tables_replay | intel-corrected | 1.0 | 910 | 1200 | 60 | 19.94 | "
+                       "313 | 14 | 52 | 905 | 0.081 | 0.012 / 0.41 | 0.073 / 1.27 |"))
+      << md;
+  // No frontier.csv: the rounds come from the SLAM optimisations.
+  EXPECT_TRUE(Contains(md,
+                       "| tables_replay | exact | 9 | 12,345 | 1,372 | 87.7 % | 100.0000 % | "
+                       "0 | 100.000 % | 100.000 % | 10.000 |"))
+      << md;
+}
+
+TEST(ResultsTables, ExploreRowsAndMeansPerWorldAndPolicy) {
+  std::vector<std::filesystem::path> dirs;
+  for (int seed : {1, 2}) {
+    const std::filesystem::path dir = FreshDir("tables_explore_" + std::to_string(seed));
+    const bool done = seed == 1;
+    WriteTextFileAtomically(
+        dir / "summary.json",
+        std::string(R"({"world": "office", "goals_policy": "scout", "seed": )") +
+            std::to_string(seed) + R"(, "terminated": ")" + (done ? "complete" : "max_sim_time") +
+            R"(", "coverage": )" + (done ? "0.995" : "0.80") +
+            R"(, "path_length_m": 250.4, "sim_time_s": 600, "wall_time_s": 42,
+               "time_to_coverage_s": {"0.99": )" +
+            (done ? "500.0" : "null") +
+            R"(}, "goals": {"issued": 20, "reached": 18, "unreachable": 1},
+               "collisions": 0})");
+    WriteTextFileAtomically(dir / "coverage.csv",
+                            "sim_time_s,path_length_m,coverage\n0,0,0\n400,200,0.8\n500,240," +
+                                std::string(done ? "0.995" : "0.8") + "\n");
+    WriteTextFileAtomically(dir / "command.txt", "scout explore --world office --seed " +
+                                                     std::to_string(seed) + " --goals scout\n");
+    dirs.push_back(dir);
+  }
+  const std::string md = ResultsTables(TableKind::kExplore, dirs);
+  EXPECT_TRUE(Contains(md,
+                       "scout explore --world office --seed 1 --goals scout\n"
+                       "scout explore --world office --seed 2 --goals scout\n"))
+      << md;
+  EXPECT_TRUE(Contains(md,
+                       "| tables_explore_1 | office | scout | 1 | complete | 99.5 % | 250 | "
+                       "240 | 600 | 500 | 20 | 18 | 1 | 0 | 42 |"))
+      << md;
+  EXPECT_TRUE(Contains(md,
+                       "| tables_explore_2 | office | scout | 2 | max_sim_time | 80.0 % | 250 "
+                       "| — | 600 | — |"))
+      << md;
+  EXPECT_TRUE(Contains(md, "| office | scout | 2 | 89.8 % | 80.0 % | 1 of 2 | 240 | 500 | 2 | 0 |"))
+      << md;
+}
+
+TEST(ResultsTables, RunWithoutCommandIsMarked) {
+  const std::filesystem::path dir = WriteFrontierRun("tables_no_command");
+  const std::string md = ResultsTables(TableKind::kBench, {dir});
+  EXPECT_TRUE(Contains(md, "(command not recorded)")) << md;
+}
+
+TEST(ResultsTables, MissingSummaryNamesTheDirectory) {
+  const std::filesystem::path dir = FreshDir("tables_empty");
+  WriteTextFileAtomically(dir / "frontier.csv", testing::kFrontierCsv);
+  try {
+    ResultsTables(TableKind::kBench, {dir});
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_TRUE(Contains(e.what(), dir.string())) << e.what();
+    EXPECT_TRUE(Contains(e.what(), "no summary.json")) << e.what();
+  }
+  EXPECT_THROW(ResultsTables(TableKind::kBench, {}), InputError);
+}
+
+TEST(ResultsTables, KindIsParsedOrNamed) {
+  EXPECT_EQ(ParseTableKind("replay"), TableKind::kReplay);
+  EXPECT_EQ(ParseTableKind("bench"), TableKind::kBench);
+  EXPECT_EQ(ParseTableKind("explore"), TableKind::kExplore);
+  try {
+    ParseTableKind("benchmark");
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_TRUE(Contains(e.what(), "'benchmark'")) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace scout::report
