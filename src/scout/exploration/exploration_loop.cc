@@ -165,7 +165,11 @@ void ExplorationLoop::RecordIssuedGoal(const Eigen::Vector2d& goal_map) {
 std::optional<Termination> ExplorationLoop::CheckTermination(
     const explore::ExploreStatus& status) const {
   const double t = robot_.sim_time_s();
-  if (status.state == explore::ExploreState::kFinished) return Termination::kComplete;
+  if (status.state == explore::ExploreState::kFinished) {
+    // Finished with frontier points left means it gave up on them (none was
+    // reachable for a sustained time): not a complete exploration.
+    return status.frontier_left > 0 ? Termination::kNoProgress : Termination::kComplete;
+  }
   if (t >= options_.explore.max_sim_time_s) return Termination::kMaxSimTime;
   if (t - last_gain_s_ >= options_.explore.no_progress_timeout_s) return Termination::kNoProgress;
   return std::nullopt;
@@ -223,6 +227,7 @@ ExplorationResult ExplorationLoop::Run(const ProgressCallback& progress,
     if (std::optional<Termination> end = CheckTermination(status)) {
       result_.terminated = *end;
       result_.returned_home = status.returned_home;
+      result_.frontier_left = status.frontier_left;
       break;
     }
     const frontier::Stopwatch watch;

@@ -22,9 +22,10 @@ namespace scout::exploration {
 
 // Why a run ended.
 enum class Termination {
-  kComplete,    // the goal manager found nothing left (and came home, if asked)
+  kComplete,    // the goal manager found no frontier left (and came home, if asked)
   kMaxSimTime,  // explore.max_sim_time_s passed
-  kNoProgress,  // coverage stopped growing for explore.no_progress_timeout_s
+  kNoProgress,  // coverage stopped growing for explore.no_progress_timeout_s, or
+                // frontier points remained that no goal could reach
 };
 std::string_view ToString(Termination termination);
 
@@ -75,6 +76,8 @@ struct ExplorationResult {
   int unreachable_goals = 0;
   int collisions = 0;
   bool returned_home = false;
+  // Frontier points left when the goal manager finished (0 when complete).
+  int frontier_left = 0;
   std::vector<CoverageSample> coverage_samples;
   std::vector<IssuedGoal> goals;
   // True poses at every scan time (world frame); estimated poses of the SLAM

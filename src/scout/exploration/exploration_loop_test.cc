@@ -30,13 +30,19 @@ TEST(ExplorationLoopTest, ExploresASmallBuildingCompletelyAndQuickly) {
   std::cout << "terminated=" << ToString(r.terminated) << " coverage=" << r.coverage
             << " sim=" << r.sim_time_s << " s wall=" << wall_s << " s path=" << r.path_length_m
             << " m goals issued=" << r.counters.goals_issued
-            << " reached=" << r.counters.goals_reached << " failed=" << r.counters.goals_failed
-            << " unreachable=" << r.unreachable_goals << "\n";
+            << " reached=" << r.counters.goals_reached << " seen=" << r.counters.goals_seen
+            << " failed=" << r.counters.goals_failed << " unreachable=" << r.unreachable_goals
+            << "\n";
   EXPECT_EQ(r.terminated, Termination::kComplete);
   EXPECT_GE(r.coverage, 0.97);
   EXPECT_EQ(r.collisions, 0);
   EXPECT_EQ(r.unreachable_goals, 0);
   EXPECT_GT(r.counters.goals_issued, 0);
+  // Goals are kept until done: each ends reached at arrival or seen on the
+  // way (the last may end with the run), none replaced on map changes.
+  EXPECT_GE(r.counters.goals_reached + r.counters.goals_seen, r.counters.goals_issued - 1);
+  EXPECT_EQ(r.counters.goals_superseded, 0);
+  EXPECT_EQ(r.frontier_left, 0);
   EXPECT_LT(wall_s, 30.0);  // a few seconds in release; sanitizer builds are slower
   EXPECT_GT(progress_calls, 2);
   // The records agree with the totals.

@@ -39,7 +39,12 @@ GroundTruth::GroundTruth(const grid::OccupancyMap& world, const std::string& wor
   }
   LabelDiscComponents(bare);
 
-  const explore::PlanningMap inflated(world, traversability);
+  // The spec's reachable space (ALGORITHMS §2 inflation): narrow passages let
+  // the explorer through a door its SLAM map narrowed, but they do not widen
+  // what exploring completely means.
+  explore::TraversabilityOptions strict = traversability;
+  strict.narrow_margin_m = strict.safety_margin_m;
+  const explore::PlanningMap inflated(world, strict);
   const explore::PathDistanceField from_start(inflated, start);
   std::vector<uint8_t> centre_reachable(limits_.num_cells(), 0);
   bool any = false;

@@ -1,5 +1,8 @@
 #include "scout/explore/goal_manager.h"
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <utility>
 
@@ -14,6 +17,10 @@ void Validate(const GoalManagerOptions& o) {
   CheckAtLeast(g, "replan_interval_s", o.replan_interval_s, 0.0);
   CheckAtLeast(g, "max_plan_attempts", o.max_plan_attempts, 1.0);
   CheckAtLeast(g, "finish_after_empty_s", o.finish_after_empty_s, 0.0);
+  CheckAtLeast(g, "finish_with_frontier_after_s", o.finish_with_frontier_after_s, 0.0);
+  CheckAtLeast(g, "goal_frontier_radius_m", o.goal_frontier_radius_m, 0.0);
+  CheckAtLeast(g, "goal_switch_margin", o.goal_switch_margin, 0.0);
+  CheckAtLeast(g, "goal_match_radius_m", o.goal_match_radius_m, 0.0);
   if (!o.boundary.empty() && o.boundary.size() < 3) {
     RejectOption(g, "boundary", "no vertices or at least 3 vertices",
                  static_cast<double>(o.boundary.size()));
@@ -106,17 +113,41 @@ void GoalManager::RefreshMap(const ExploreInput& in) {
   visited_.RetryChangedGoals(*map_, in.submaps);
 }
 
-GoalManager::Selection GoalManager::SelectAndPlan(const ExploreInput& in) {
-  ++counters_.selections;
-  const std::vector<Eigen::Vector2d> frontier = FrontierInBoundary(*in.frontier);
-  const Eigen::Vector2d robot = in.robot_pose.translation();
-  std::optional<PathDistanceField> field;
-  if (policy_->needs_path_distances()) field.emplace(*map_, robot);
+double GoalManager::DistanceToFrontier(const Eigen::Vector2d& goal,
+                                       const std::vector<Eigen::Vector2d>& frontier) {
+  double d2 = std::numeric_limits<double>::infinity();
+  for (const Eigen::Vector2d& p : frontier) d2 = std::min(d2, (p - goal).squaredNorm());
+  return std::sqrt(d2);
+}
+
+GoalManager::Reach GoalManager::ReachFrom(const Eigen::Vector2d& robot,
+                                          const std::vector<Eigen::Vector2d>& frontier) {
+  Reach reach;
+  reach.start.emplace(*map_, robot);
+  reach.field.emplace(*map_, *reach.start);
+  counters_.escapes += reach.start->escaped();
+  if (reach.start->escaped() || frontier.empty()) return reach;
+  const double snap = map_->options().goal_snap_radius_m;
+  for (const Eigen::Vector2d& p : frontier) {
+    if (reach.field->NearestReached(p, snap)) return reach;
+  }
+  // Boxed in: the robot's cell is traversable but its component reaches no
+  // frontier (a pocket that even narrow passages cannot leave). Leave it
+  // wherever the disc keeps the clearance it has.
+  reach.start.emplace(*map_, robot, /*escape=*/true);
+  reach.field.emplace(*map_, *reach.start);
+  ++counters_.escapes;
+  return reach;
+}
+
+std::vector<GoalCandidate> GoalManager::Rank(const ExploreInput& in,
+                                             const std::vector<Eigen::Vector2d>& frontier,
+                                             const Reach& reach) {
   PolicyInput pi;
   pi.map = map_.get();
-  pi.distances = field ? &*field : nullptr;
+  pi.distances = &*reach.field;
   pi.frontier = &frontier;
-  pi.robot = robot;
+  pi.robot = in.robot_pose.translation();
   if (goal_) pi.current_goal = Resolve(*goal_, in.submaps);
   // Reached goals are avoided like failed ones until the map around them
   // changes: a frontier that stays after arrival cannot be seen from there.
@@ -125,18 +156,28 @@ GoalManager::Selection GoalManager::SelectAndPlan(const ExploreInput& in) {
   blacklisted.insert(blacklisted.end(), visited.begin(), visited.end());
   pi.avoid = &blacklisted;
   pi.avoid_radius_m = options_.failed_goals.blacklist_radius_m;
-
-  Selection sel;
-  int attempts = 0;
+  std::vector<GoalCandidate> ranked;
   for (const GoalCandidate& c : policy_->Rank(pi)) {
-    if (failed_.IsNear(c.position, blacklisted)) continue;
-    sel.none_left = false;
+    if (!failed_.IsNear(c.position, blacklisted)) ranked.push_back(c);
+  }
+  candidates_.clear();
+  for (const GoalCandidate& c : ranked) candidates_.push_back(c.position);
+  return ranked;
+}
+
+GoalManager::Selection GoalManager::PlanFirst(const std::vector<GoalCandidate>& candidates,
+                                              const ExploreInput& in, const StartRegion& start) {
+  Selection sel;
+  sel.none_left = candidates.empty();
+  int attempts = 0;
+  for (const GoalCandidate& c : candidates) {
     if (attempts++ >= options_.max_plan_attempts) break;
-    std::optional<PlannedPath> path = planner_.Plan(*map_, robot, c.position);
+    // A candidate near one that failed during this very loop shares its fate.
+    if (failed_.IsNear(c.position, failed_.Blacklisted(in.submaps))) continue;
+    std::optional<PlannedPath> path = planner_.Plan(*map_, start, c.position);
     if (!path) {
       ++counters_.goals_unreachable;
       failed_.RecordFailure(c.position, in.submaps, *map_);
-      blacklisted.push_back(c.position);
       continue;
     }
     sel.goal = c.position;
@@ -146,14 +187,25 @@ GoalManager::Selection GoalManager::SelectAndPlan(const ExploreInput& in) {
   return sel;
 }
 
+GoalManager::Selection GoalManager::SelectAndPlan(const ExploreInput& in) {
+  ++counters_.selections;
+  const std::vector<Eigen::Vector2d> frontier = FrontierInBoundary(*in.frontier);
+  const Reach reach = ReachFrom(in.robot_pose.translation(), frontier);
+  return PlanFirst(Rank(in, frontier, reach), in, *reach.start);
+}
+
 void GoalManager::BeginDriving(const Eigen::Vector2d& goal, const PlannedPath& path,
                                const ExploreInput& in, ExploreState state, bool new_goal) {
   goal_ = Anchor(goal, in.submaps);
   follower_.SetPath(path.points);
-  best_remaining_m_ = path.length_m;
+  if (new_goal || path.length_m < best_remaining_m_) best_remaining_m_ = path.length_m;
   last_replan_s_ = in.time_s;
   if (new_goal) {
     last_progress_s_ = in.time_s;
+    // A centroid goal (baselines) may lie off the frontier: the goal stays
+    // valid while the frontier is no farther than when it was chosen.
+    goal_frontier_reach_m_ = DistanceToFrontier(goal, FrontierInBoundary(*in.frontier)) +
+                             options_.goal_frontier_radius_m;
     if (state == ExploreState::kDriving) ++counters_.goals_issued;
   }
   state_ = state;
@@ -180,9 +232,18 @@ void GoalManager::Plan(const ExploreInput& in) {
   if (!sel.none_left) empty_since_s_.reset();
 }
 
-void GoalManager::FinishOrGoHome(const ExploreInput& in) {
+void GoalManager::FinishOrGoHome(const ExploreInput& in, ExploreStatus& status) {
   if (!empty_since_s_) empty_since_s_ = in.time_s;
-  if (in.time_s - *empty_since_s_ < options_.finish_after_empty_s) return;
+  frontier_left_ = static_cast<int>(FrontierInBoundary(*in.frontier).size());
+  const double wait_s =
+      frontier_left_ > 0 ? options_.finish_with_frontier_after_s : options_.finish_after_empty_s;
+  if (in.time_s - *empty_since_s_ < wait_s) {
+    // Unreached frontier may only need a fresh look (a 180 degree lidar sees
+    // half of the robot's surroundings): turn on the spot while waiting.
+    if (frontier_left_ > 0)
+      status.command.angular_radps = follower_.options().max_angular_speed_radps;
+    return;
+  }
   if (options_.return_to_start && home_) {
     const Eigen::Vector2d home = Resolve(*home_, in.submaps);
     if ((home - in.robot_pose.translation()).norm() <= follower_.options().goal_tolerance_m) {
@@ -195,28 +256,66 @@ void GoalManager::FinishOrGoHome(const ExploreInput& in) {
   EndGoal(ExploreState::kFinished);
 }
 
+void GoalManager::ReplanHome(const ExploreInput& in) {
+  // Home moves with its submap; a failed re-plan keeps the old path.
+  const Eigen::Vector2d home = Resolve(*home_, in.submaps);
+  if (auto path = planner_.Plan(*map_, in.robot_pose.translation(), home)) {
+    BeginDriving(home, *path, in, state_, /*new_goal=*/false);
+  }
+}
+
 void GoalManager::Replan(const ExploreInput& in) {
   RefreshMap(in);
   last_replan_s_ = in.time_s;
-  if (state_ == ExploreState::kReturning) {
-    // Home moves with its submap; a failed re-plan keeps the old path.
-    if (auto path =
-            planner_.Plan(*map_, in.robot_pose.translation(), Resolve(*home_, in.submaps))) {
-      BeginDriving(Resolve(*home_, in.submaps), *path, in, state_, /*new_goal=*/false);
-    }
-    return;
-  }
+  if (state_ == ExploreState::kReturning) return ReplanHome(in);
   const Eigen::Vector2d current = Resolve(*goal_, in.submaps);
-  Selection sel = SelectAndPlan(in);
-  if (sel.goal) {
-    const bool same = (*sel.goal - current).norm() <= follower_.options().goal_tolerance_m;
-    if (!same) ++counters_.goals_superseded;
-    BeginDriving(*sel.goal, *sel.path, in, ExploreState::kDriving, /*new_goal=*/!same);
-  } else if (sel.none_left) {
-    // The goal's frontier has been seen meanwhile and nothing else is left.
-    ++counters_.goals_superseded;
-    EndGoal(ExploreState::kPlanning);
+  const std::vector<Eigen::Vector2d> frontier = FrontierInBoundary(*in.frontier);
+  if (DistanceToFrontier(current, frontier) > goal_frontier_reach_m_) {
+    // Seen on the way: the goal did its job.
+    ++counters_.goals_seen;
+    visited_.RecordFailure(current, in.submaps, *map_);
+    return EndGoal(ExploreState::kPlanning);
   }
+  ++counters_.selections;
+  const Reach reach = ReachFrom(in.robot_pose.translation(), frontier);
+  const std::vector<GoalCandidate> ranked = Rank(in, frontier, reach);
+  // The current goal's score: its component's best candidate.
+  std::optional<double> current_score;
+  const double match2 = options_.goal_match_radius_m * options_.goal_match_radius_m;
+  for (const GoalCandidate& c : ranked) {
+    if ((c.position - current).squaredNorm() > match2) continue;
+    if (!current_score || c.score > *current_score) current_score = c.score;
+  }
+  if (current_score) {
+    std::vector<GoalCandidate> better;
+    for (const GoalCandidate& c : ranked) {
+      if (c.score > *current_score + options_.goal_switch_margin &&
+          (c.position - current).squaredNorm() > match2) {
+        better.push_back(c);
+      }
+    }
+    if (!better.empty()) {
+      Selection sel = PlanFirst(better, in, *reach.start);
+      if (sel.goal) {
+        ++counters_.goals_superseded;
+        return BeginDriving(*sel.goal, *sel.path, in, ExploreState::kDriving, /*new_goal=*/true);
+      }
+    }
+  }
+  // Keep the goal; only its path changes with the map.
+  if (std::optional<PlannedPath> path = planner_.Plan(*map_, *reach.start, current)) {
+    return BeginDriving(current, *path, in, ExploreState::kDriving, /*new_goal=*/false);
+  }
+  if (map_->NearestTraversable(current, map_->options().goal_snap_radius_m)) {
+    // The map now blocks every way there.
+    ++counters_.goals_unreachable;
+    failed_.RecordFailure(current, in.submaps, *map_);
+  } else {
+    // A wall seen next to the goal put it in the band: its frontier is
+    // still there, so the next selection offers a reachable point of it.
+    ++counters_.goals_dropped;
+  }
+  EndGoal(ExploreState::kPlanning);
 }
 
 void GoalManager::Drive(const ExploreInput& in, ExploreStatus& status) {
@@ -268,9 +367,10 @@ ExploreStatus GoalManager::Update(const ExploreInput& in) {
     }
     if (state_ == ExploreState::kPlanning) {
       Plan(in);
-      if (state_ == ExploreState::kPlanning && !need_selection_) FinishOrGoHome(in);
+      if (state_ == ExploreState::kPlanning && !need_selection_) FinishOrGoHome(in, status);
     }
     if (state_ == ExploreState::kDriving || state_ == ExploreState::kReturning) {
+      frontier_left_ = 0;
       Drive(in, status);
     }
   }
@@ -278,6 +378,8 @@ ExploreStatus GoalManager::Update(const ExploreInput& in) {
   if (goal_) status.goal = Resolve(*goal_, in.submaps);
   if (follower_.has_path()) status.path = follower_.path();
   status.blacklisted = failed_.Blacklisted(in.submaps);
+  status.candidates = candidates_;
+  status.frontier_left = frontier_left_;
   status.returned_home = returned_home_;
   return status;
 }

@@ -10,9 +10,11 @@
 #include "scout/explore/anchored_point.h"
 #include "scout/explore/failed_goal_memory.h"
 #include "scout/explore/goal_policies.h"
+#include "scout/explore/path_distance_field.h"
 #include "scout/explore/path_follower.h"
 #include "scout/explore/path_planner.h"
 #include "scout/explore/planning_map.h"
+#include "scout/explore/start_region.h"
 #include "scout/geometry/rigid_transform.h"
 #include "scout/grid/occupancy_map.h"
 
@@ -23,15 +25,29 @@ struct GoalManagerOptions {
   // progress_min_m within progress_timeout_s (explore_lite's 30 s).
   double progress_timeout_s = 30.0;
   double progress_min_m = 0.25;
-  // While driving, a map change triggers re-selection (hysteresis keeps the
-  // goal unless another is clearly better) and re-planning, at most this often.
+  // While driving, a map change re-plans the path to the kept goal (and
+  // checks whether a clearly better goal appeared), at most this often.
   double replan_interval_s = 1.0;
+  // The goal is kept until reached, failed, or no frontier point is left
+  // within this radius of it (metres): then its frontier has been seen.
+  double goal_frontier_radius_m = 0.5;
+  // Another goal replaces the current one only when its score beats the
+  // current goal's by more than this (the policy's units; metres of path for
+  // scout): a marginally better point must not make the robot turn around.
+  // The current goal's score is that of the best candidate within
+  // goal_match_radius_m of it (a component's navigation point moves with the
+  // robot); without one the goal is simply kept.
+  double goal_switch_margin = 5.0;
+  double goal_match_radius_m = 1.5;
   // Candidates planned to per selection before giving up until the next map
   // change (bounds the work when many baseline goals are unreachable).
   int max_plan_attempts = 10;
   // Exploration ends only after no goal was left for this long; at the start
   // the map may simply not have arrived yet.
   double finish_after_empty_s = 2.0;
+  // With frontier points left but none reachable, the robot turns on the spot
+  // (refreshing the map around it) for this long before it gives up.
+  double finish_with_frontier_after_s = 10.0;
   // After exploring, drive back to where Start() was called.
   bool return_to_start = false;
   // Optional exploration area: a simple polygon in the global frame (at least
@@ -69,12 +85,15 @@ struct ExploreInput {
 
 struct ExploreCounters {
   int goals_issued = 0;
-  int goals_reached = 0;
+  int goals_reached = 0;      // the robot arrived within the goal tolerance
+  int goals_seen = 0;         // its frontier was seen before the robot arrived
   int goals_failed = 0;       // progress timeout
   int goals_unreachable = 0;  // no plan
-  int goals_superseded = 0;   // another goal became better on the way
+  int goals_superseded = 0;   // a clearly better goal replaced it on the way
+  int goals_dropped = 0;      // the map put it inside the inflated band
   int goals_retried = 0;      // lifted from the blacklist after a map change
   int selections = 0;
+  int escapes = 0;  // searches that started by leaving the band or a pocket
 };
 
 struct ExploreStatus {
@@ -83,6 +102,11 @@ struct ExploreStatus {
   std::optional<Eigen::Vector2d> goal;  // global
   std::vector<Eigen::Vector2d> path;    // global, for display
   std::vector<Eigen::Vector2d> blacklisted;
+  // The goal candidates of the latest selection, best first (global).
+  std::vector<Eigen::Vector2d> candidates;
+  // Frontier points (inside the boundary) left when no goal was: nonzero in
+  // kFinished means exploration gave up on them rather than completed.
+  int frontier_left = 0;
   bool returned_home = false;
 };
 
@@ -118,11 +142,26 @@ class GoalManager {
     // No candidate outside the blacklist (as opposed to: plans failed).
     bool none_left = true;
   };
+  // Where searches start this cycle, with the path distances from there.
+  struct Reach {
+    std::optional<StartRegion> start;
+    std::optional<PathDistanceField> field;
+  };
   // Builds the planning map when the map changed (or none exists yet) and
   // lifts the blacklisting of goals whose surroundings changed.
   void RefreshMap(const ExploreInput& input);
-  // Returns the best goal that is not blacklisted and has a plan; goals
-  // without a plan are blacklisted on the way.
+  // Starts at the robot (leaving the band if it stands in it); when no
+  // frontier point is reachable from there the robot is boxed in, and the
+  // search escapes even from a traversable cell.
+  Reach ReachFrom(const Eigen::Vector2d& robot, const std::vector<Eigen::Vector2d>& frontier);
+  // Returns the policy's candidates that are not blacklisted, best first.
+  std::vector<GoalCandidate> Rank(const ExploreInput& input,
+                                  const std::vector<Eigen::Vector2d>& frontier, const Reach& reach);
+  // Plans to the candidates in order (at most max_plan_attempts) and returns
+  // the first with a plan; candidates without one are blacklisted.
+  Selection PlanFirst(const std::vector<GoalCandidate>& candidates, const ExploreInput& input,
+                      const StartRegion& start);
+  // Returns the best goal that is not blacklisted and has a plan.
   Selection SelectAndPlan(const ExploreInput& input);
   // Anchors the goal and hands its path to the follower. A re-plan to the
   // same goal keeps the progress clock running.
@@ -131,12 +170,18 @@ class GoalManager {
   void EndGoal(ExploreState next);
   // PLANNING: select and plan when something changed.
   void Plan(const ExploreInput& input);
-  // No goal left: after finish_after_empty_s, return home or finish.
-  void FinishOrGoHome(const ExploreInput& input);
-  // DRIVING/RETURNING after a map change: re-select with hysteresis, re-plan.
+  // No goal left: after finish_after_empty_s (longer, turning on the spot,
+  // when frontier points remain), return home or finish.
+  void FinishOrGoHome(const ExploreInput& input, ExploreStatus& status);
+  // DRIVING/RETURNING after a map change: keep the goal while it is still a
+  // frontier, switch only for a clearly better one, re-plan the path.
   void Replan(const ExploreInput& input);
+  void ReplanHome(const ExploreInput& input);
   // DRIVING/RETURNING: follow, watch progress.
   void Drive(const ExploreInput& input, ExploreStatus& status);
+  // Returns the distance from 'goal' to the nearest frontier point.
+  static double DistanceToFrontier(const Eigen::Vector2d& goal,
+                                   const std::vector<Eigen::Vector2d>& frontier);
   std::vector<Eigen::Vector2d> FrontierInBoundary(const std::vector<Eigen::Vector2d>& f) const;
 
   GoalManagerOptions options_;
@@ -158,8 +203,11 @@ class GoalManager {
   bool need_selection_ = true;
   double last_replan_s_ = -1e300;
   double best_remaining_m_ = 0.0;
+  double goal_frontier_reach_m_ = 0.0;
   double last_progress_s_ = 0.0;
   std::optional<double> empty_since_s_;
+  int frontier_left_ = 0;
+  std::vector<Eigen::Vector2d> candidates_;
   bool returned_home_ = false;
   ExploreCounters counters_;
 };

@@ -190,5 +190,119 @@ TEST(GoalManagerTest, UnreachableBaselineGoalIsBlacklistedNotDrivenTo) {
   EXPECT_EQ(st.blacklisted.size(), 1u);
 }
 
+TEST(GoalManagerTest, RobotInsideTheInflatedBandNearAWallStillExploresTheRoom) {
+  Room room;
+  GoalManager gm = MakeManager();
+  gm.Start();
+  // 0.2 m from the wall's cell centre: inside the 0.40 m band, and even
+  // closer than a narrow passage allows. It must not "complete" here.
+  const Eigen::Vector2d robot = room.b.At(10, 2);
+  const ExploreStatus st = gm.Update(room.Input(0, robot, true));
+  ASSERT_EQ(st.state, ExploreState::kDriving);
+  ASSERT_TRUE(st.goal.has_value());
+  EXPECT_NEAR(st.goal->x(), room.b.At(40, 0).x(), 1e-9);
+  EXPECT_EQ(st.path.front(), robot);
+  EXPECT_EQ(gm.counters().escapes, 1);
+  // On the way out it never gets closer to the wall (row 0) than it was.
+  for (const Eigen::Vector2d& p : st.path) EXPECT_GE(p.y(), robot.y() - 1e-9);
+}
+
+// A wall at x = 20 whose door is 0.7 m wide: narrower than twice the 0.40 m
+// inflation (as SLAM's wall noise makes a 0.9 m door), wider than the robot.
+struct PinchedDoor {
+  MapBuilder b{60, 40};
+  std::vector<Eigen::Vector2d> frontier;
+  PinchedDoor() {
+    b.Wall(0, 0, 59, 39).Fill(1, 1, 58, 38, grid::CellState::kUnknown).Free(1, 1, 40, 38);
+    b.Wall(20, 1, 20, 38).Free(20, 15, 20, 21);
+    frontier = b.FrontierPoints();
+  }
+};
+
+TEST(GoalManagerTest, ANarrowedDoorDoesNotSealTheRoomBehindIt) {
+  PinchedDoor door;
+  ExploreInput in;
+  in.robot_pose = geometry::Rigid2d(door.b.At(8, 18), 0.0);
+  in.map = &door.b.map();
+  in.frontier = &door.frontier;
+  in.map_changed = true;
+  GoalManager gm = MakeManager();
+  gm.Start();
+  const ExploreStatus st = gm.Update(in);
+  ASSERT_EQ(st.state, ExploreState::kDriving);
+  ASSERT_TRUE(st.goal.has_value());
+  EXPECT_GT(st.goal->x(), 4.0);  // beyond the door
+
+  // Without narrow passages nothing is reachable: after turning on the spot
+  // for finish_with_frontier_after_s it gives up, and says frontier is left
+  // (the loop reports that as no_progress, never as complete).
+  TraversabilityOptions strict;
+  strict.narrow_margin_m = strict.safety_margin_m;
+  GoalManagerOptions o;
+  GoalManager sealed(o, strict, {}, {}, MakeGoalPolicy("scout", {}));
+  sealed.Start();
+  ExploreStatus waiting = sealed.Update(in);
+  EXPECT_EQ(waiting.state, ExploreState::kPlanning);
+  in.map_changed = false;
+  in.time_s = o.finish_with_frontier_after_s - 1.0;
+  waiting = sealed.Update(in);
+  EXPECT_EQ(waiting.state, ExploreState::kPlanning);
+  EXPECT_GT(waiting.command.angular_radps, 0.0);
+  in.time_s = o.finish_with_frontier_after_s + 0.5;
+  const ExploreStatus gave_up = sealed.Update(in);
+  EXPECT_EQ(gave_up.state, ExploreState::kFinished);
+  EXPECT_EQ(gave_up.frontier_left, static_cast<int>(door.frontier.size()));
+}
+
+TEST(GoalManagerTest, GoalIsKeptWhenASlightlyBetterOneAppearsAndSwitchedForAClearlyBetterOne) {
+  Room room;
+  GoalManagerOptions o;
+  o.goal_switch_margin = 1.5;  // metres, for "nearest" (score = -distance)
+  GoalManager gm = MakeManager(o, "nearest");
+  gm.Start();
+  const Eigen::Vector2d robot = room.b.At(10, 20);
+  const ExploreStatus first = gm.Update(room.Input(0, robot, true));
+  ASSERT_TRUE(first.goal.has_value());
+  EXPECT_NEAR((*first.goal - room.b.At(40, 20)).norm(), 0.0, 1e-9);  // 3 m away
+
+  // Unknown space appears 2.2 m away: better by 0.8 m only. The goal stays
+  // (and so does the count of issued goals); only the path is re-planned.
+  Room slightly = room;
+  slightly.b.Fill(28, 5, 30, 7, grid::CellState::kUnknown);
+  slightly.frontier = slightly.b.FrontierPoints();
+  const ExploreStatus kept = gm.Update(slightly.Input(2, robot, true));
+  ASSERT_EQ(kept.state, ExploreState::kDriving);
+  EXPECT_EQ(*kept.goal, *first.goal);
+  EXPECT_EQ(gm.counters().goals_issued, 1);
+  EXPECT_EQ(gm.counters().goals_superseded, 0);
+
+  // Unknown space 0.4 m from the robot: better by 2.6 m, so it wins.
+  Room clearly = slightly;
+  clearly.b.Fill(15, 20, 16, 21, grid::CellState::kUnknown);
+  clearly.frontier = clearly.b.FrontierPoints();
+  const ExploreStatus switched = gm.Update(clearly.Input(4, robot, true));
+  ASSERT_EQ(switched.state, ExploreState::kDriving);
+  EXPECT_LT((*switched.goal - robot).norm(), 0.5);
+  EXPECT_EQ(gm.counters().goals_issued, 2);
+  EXPECT_EQ(gm.counters().goals_superseded, 1);
+}
+
+TEST(GoalManagerTest, GoalWhoseFrontierIsSeenOnTheWayEndsAsSeen) {
+  Room room;
+  GoalManager gm = MakeManager();
+  gm.Start();
+  const Eigen::Vector2d robot = room.b.At(10, 20);
+  ASSERT_TRUE(gm.Update(room.Input(0, robot, true)).goal.has_value());
+  Room seen = room;
+  seen.b.Free(41, 1, 58, 38);  // the whole room is known now
+  seen.frontier = seen.b.FrontierPoints();
+  ASSERT_TRUE(seen.frontier.empty());
+  const ExploreStatus st = gm.Update(seen.Input(2, robot, true));
+  EXPECT_NE(st.state, ExploreState::kDriving);
+  EXPECT_EQ(gm.counters().goals_seen, 1);
+  EXPECT_EQ(gm.counters().goals_reached, 0);
+  EXPECT_EQ(gm.counters().goals_superseded, 0);
+}
+
 }  // namespace
 }  // namespace scout::explore

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "scout/explore/planning_map.h"
+#include "scout/explore/start_region.h"
 
 namespace scout::explore {
 
@@ -18,11 +19,12 @@ class PathDistanceField {
  public:
   static constexpr float kUnreachable = std::numeric_limits<float>::infinity();
 
-  // Starts at the robot's cell; when that cell is not traversable (the robot
-  // stands in the inflated band), at the nearest traversable cell within the
-  // inflation radius, as the frontier detector seeds its WFD (ALGORITHMS §2).
-  // With no such cell every distance is kUnreachable.
+  // Starts where the robot enters the traversable cells (StartRegion: its
+  // own cell, or the cells its bare disc reaches when it stands in the
+  // inflated band). With no such cell every distance is kUnreachable.
   PathDistanceField(const PlanningMap& map, const Eigen::Vector2d& robot);
+  // Starts at the seeds of 'start', which must come from 'map'.
+  PathDistanceField(const PlanningMap& map, const StartRegion& start);
 
   // Returns the path distance in metres to the cell (kUnreachable if none).
   float at(int64_t flat) const { return distance_m_[flat]; }
@@ -30,6 +32,7 @@ class PathDistanceField {
   float at(const grid::CellIndex& cell) const {
     return limits_.Contains(cell) ? distance_m_[limits_.FlatIndex(cell)] : kUnreachable;
   }
+  // The seed cell nearest the robot by path, if any.
   const std::optional<grid::CellIndex>& start() const { return start_; }
 
   // Returns the least distance over the cells within 'radius_m' of 'p' (the cell

@@ -39,13 +39,17 @@ double PolylineLength(const std::vector<Eigen::Vector2d>& points) {
 
 std::optional<PlannedPath> PathPlanner::Plan(const PlanningMap& map, const Eigen::Vector2d& start,
                                              const Eigen::Vector2d& goal) const {
+  return Plan(map, StartRegion(map, start), goal);
+}
+
+std::optional<PlannedPath> PathPlanner::Plan(const PlanningMap& map, const StartRegion& start,
+                                             const Eigen::Vector2d& goal) const {
   const bool penalise = options_.clearance_weight > 0.0;
   if (penalise && !map.has_clearance()) {
     throw std::invalid_argument("PathPlanner: clearance_weight > 0 needs a map with clearance");
   }
   const grid::MapLimits& limits = map.limits();
-  const auto start_cell = map.NearestTraversable(start, map.options().inflation_radius_m());
-  if (!start_cell) return std::nullopt;
+  if (start.empty()) return std::nullopt;
   const double res = limits.resolution();
   const double snap = map.options().goal_snap_radius_m;
   const grid::CellIndex goal_cell = limits.CellContaining(goal);
@@ -73,9 +77,17 @@ std::optional<PlannedPath> PathPlanner::Plan(const PlanningMap& map, const Eigen
   const auto later = [](const Entry& a, const Entry& b) {
     return a.f != b.f ? a.f > b.f : a.h > b.h;
   };
-  const int64_t s = limits.FlatIndex(*start_cell);
-  g[s] = 0.0f;
-  open.push_back({heuristic(*start_cell), heuristic(*start_cell), s});
+  // Every seed starts with its escape distance (and no parent), so A* picks
+  // the best way out; a seed may still be improved through another one.
+  for (const StartSeed& seed : start.seeds()) {
+    const int64_t s = limits.FlatIndex(seed.cell);
+    const float gs = static_cast<float>(seed.distance_m / limits.resolution());
+    if (gs >= g[s]) continue;
+    g[s] = gs;
+    const float hs = heuristic(seed.cell);
+    open.push_back({gs + hs, hs, s});
+    std::push_heap(open.begin(), open.end(), later);
+  }
   const float kStep[8] = {
       1, 1, 1, 1, float(M_SQRT2), float(M_SQRT2), float(M_SQRT2), float(M_SQRT2)};
   PlannedPath path;
@@ -111,11 +123,15 @@ std::optional<PlannedPath> PathPlanner::Plan(const PlanningMap& map, const Eigen
   // Walk back through the parents; the raw path is start, cells..., end.
   std::vector<Eigen::Vector2d> raw;
   std::vector<double> cost;
+  grid::CellIndex seed_cell;
   for (int64_t c = reached;;) {
     const grid::CellIndex ci = limits.CellOfFlatIndex(c);
     raw.push_back(limits.CellCenter(ci));
     cost.push_back(g[c] * res);
-    if (c == s) break;
+    if (parent[c] == kNoParent) {
+      seed_cell = ci;
+      break;
+    }
     const auto& d = kNeighbourOffsets[parent[c]];
     path.cell_path_length_m += (parent[c] < 4 ? 1.0 : M_SQRT2) * res;
     c = limits.FlatIndex({ci.x - d[0], ci.y - d[1]});
@@ -124,15 +140,17 @@ std::optional<PlannedPath> PathPlanner::Plan(const PlanningMap& map, const Eigen
   std::reverse(cost.begin(), cost.end());
   // End exactly at the goal when it lies in the reached cell.
   if (limits.CellOfFlatIndex(reached) == goal_cell) raw.back() = goal;
-  // Begin at the robot; from inside the inflated band it first moves
-  // straight to the start cell, which shortcutting must not skip.
+  // Begin at the robot; from inside the inflated band it first follows its
+  // escape path to the seed cell, which shortcutting must not skip.
   size_t first_free = 0;
-  if (*start_cell == limits.CellContaining(start)) {
-    raw.front() = start;
+  if (!start.escaped()) {
+    raw.front() = start.robot();
   } else {
-    raw.insert(raw.begin(), start);
-    cost.insert(cost.begin(), 0.0);
-    first_free = 1;
+    std::vector<Eigen::Vector2d> escape = start.PathTo(seed_cell);
+    escape.pop_back();  // the seed's centre is raw.front()
+    raw.insert(raw.begin(), escape.begin(), escape.end());
+    cost.insert(cost.begin(), escape.size(), 0.0);
+    first_free = escape.size();
   }
   path.points = options_.shortcut ? Shortcut(map, raw, cost, first_free) : raw;
   path.length_m = PolylineLength(path.points);
@@ -140,10 +158,11 @@ std::optional<PlannedPath> PathPlanner::Plan(const PlanningMap& map, const Eigen
 }
 
 float PathPlanner::StepFactor(const PlanningMap& map, int64_t flat) const {
-  if (options_.clearance_weight <= 0.0) return 1.0f;
+  const float tier = map.StepFactor(flat);
+  if (options_.clearance_weight <= 0.0) return tier;
   const double beyond = map.clearance_m(flat) - map.options().inflation_radius_m();
   const double closeness = std::max(0.0, 1.0 - beyond / options_.clearance_band_m);
-  return static_cast<float>(1.0 + options_.clearance_weight * closeness);
+  return tier * static_cast<float>(1.0 + options_.clearance_weight * closeness);
 }
 
 double PathPlanner::SegmentCost(const PlanningMap& map, const Eigen::Vector2d& a,
@@ -162,7 +181,9 @@ std::vector<Eigen::Vector2d> PathPlanner::Shortcut(const PlanningMap& map,
                                                    const std::vector<double>& cost,
                                                    size_t first_free) const {
   std::vector<Eigen::Vector2d> out(raw.begin(), raw.begin() + first_free + 1);
-  const bool penalise = options_.clearance_weight > 0.0;
+  // Narrow passages cost more than their length: a shortcut through them must
+  // not pass for cheaper than the cells it replaces.
+  const bool penalise = options_.clearance_weight > 0.0 || map.MaxStepFactor() > 1.0f;
   size_t anchor = first_free;
   while (anchor + 1 < raw.size()) {
     // Extend the segment from the anchor while it stays valid (greedy: the
@@ -173,7 +194,7 @@ std::vector<Eigen::Vector2d> PathPlanner::Shortcut(const PlanningMap& map,
     while (j + 1 < raw.size()) {
       if (!map.SegmentTraversable(raw[anchor], raw[j + 1])) break;
       if (penalise &&
-          SegmentCost(map, raw[anchor], raw[j + 1]) > cost[j + 1] - cost[anchor] + 1e-6) {
+          SegmentCost(map, raw[anchor], raw[j + 1]) > cost[j + 1] - cost[anchor] + 1e-4) {
         break;
       }
       ++j;

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "scout/explore/planning_map.h"
+#include "scout/explore/start_region.h"
 
 namespace scout::explore {
 
@@ -44,12 +45,16 @@ class PathPlanner {
   explicit PathPlanner(const PathPlannerOptions& options);
 
   // Returns a path from 'start' to 'goal', or nothing when no traversable path
-  // exists. A start in the inflated band leaves it through the nearest
-  // traversable cell within the inflation radius; a goal whose cell is not
-  // traversable is reached at a traversable cell within goal_snap_radius_m.
-  // With clearance_weight > 0 the map must have clearance (else throws
+  // exists. A start in the inflated band leaves it as StartRegion says (over
+  // cells where the bare disc fits); a goal whose cell is not traversable is
+  // reached at a traversable cell within goal_snap_radius_m. With
+  // clearance_weight > 0 the map must have clearance (else throws
   // std::invalid_argument).
   std::optional<PlannedPath> Plan(const PlanningMap& map, const Eigen::Vector2d& start,
+                                  const Eigen::Vector2d& goal) const;
+  // As above from the seeds of 'start' (which must come from 'map'): the same
+  // start as a PathDistanceField built from it, so their costs agree.
+  std::optional<PlannedPath> Plan(const PlanningMap& map, const StartRegion& start,
                                   const Eigen::Vector2d& goal) const;
 
   const PathPlannerOptions& options() const { return options_; }

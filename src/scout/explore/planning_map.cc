@@ -15,6 +15,9 @@ void Validate(const TraversabilityOptions& o) {
   CheckAtLeast("traversability", "robot_radius_m", o.robot_radius_m, 0.0);
   CheckAtLeast("traversability", "safety_margin_m", o.safety_margin_m, 0.0);
   CheckAtLeast("traversability", "goal_snap_radius_m", o.goal_snap_radius_m, 0.0);
+  CheckAtLeast("traversability", "narrow_margin_m", o.narrow_margin_m, 0.0);
+  CheckAtLeast("traversability", "narrow_cost_factor", o.narrow_cost_factor, 1.0);
+  CheckAtLeast("traversability", "escape_radius_m", o.escape_radius_m, 0.0);
 }
 
 PlanningMap::PlanningMap(const grid::OccupancyMap& map, const TraversabilityOptions& options,
@@ -28,11 +31,17 @@ PlanningMap::PlanningMap(const grid::OccupancyMap& map, const TraversabilityOpti
   // The same inflation as the frontier detector's, so a frontier point that
   // WFD reached is not blocked here by a different rounding.
   blocked_ = grid::InflateOccupied(states_, limits_, options_.inflation_radius_m());
+  std::vector<uint8_t> tight;
+  if (options_.narrow_margin_m < options_.safety_margin_m) {
+    tight =
+        grid::InflateOccupied(states_, limits_, options_.robot_radius_m + options_.narrow_margin_m);
+  }
   traversable_.resize(states_.size());
   for (size_t i = 0; i < states_.size(); ++i) {
     const bool passable = states_[i] == grid::CellState::kFree ||
                           (options_.unknown_traversable && states_[i] == grid::CellState::kUnknown);
-    traversable_[i] = passable && !blocked_[i];
+    traversable_[i] = !passable ? 0 : !blocked_[i] ? 1 : !tight.empty() && !tight[i] ? kNarrow : 0;
+    has_narrow_ = has_narrow_ || traversable_[i] == kNarrow;
   }
   if (with_clearance) {
     std::vector<uint8_t> occupied(states_.size());

@@ -2,6 +2,7 @@
 #define SCOUT_EXPLORE_PLANNING_MAP_H_
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -30,6 +31,19 @@ struct TraversabilityOptions {
   // reachable cell within this radius (metres). It absorbs the rounding
   // between a submap's lattice and the fused map's; 0 demands the goal's cell.
   double goal_snap_radius_m = 0.10;
+  // Narrow passages: cells of the inflated band where the robot still keeps
+  // narrow_margin_m (< safety_margin_m) from occupied cells are traversable
+  // at narrow_cost_factor times the cost of a step. SLAM's wall noise narrows
+  // a 0.9 m door below twice the inflation radius; without this tier such a
+  // door seals the room (and a robot inside it is stranded in a pocket).
+  // The factor keeps paths out of the band wherever there is room.
+  // narrow_margin_m >= safety_margin_m disables the tier.
+  double narrow_margin_m = 0.10;
+  double narrow_cost_factor = 4.0;
+  // A robot standing closer to a wall than the narrow margin leaves through
+  // cells where it keeps at least the clearance it has, searched within this
+  // radius of it (metres; see StartRegion). 0 strands it where it stands.
+  double escape_radius_m = 1.0;
 
   double inflation_radius_m() const { return robot_radius_m + safety_margin_m; }
 };
@@ -64,6 +78,16 @@ class PlanningMap {
   bool blocked(int64_t flat) const { return blocked_[flat] != 0; }
   // True when the robot's centre may be in this cell.
   bool traversable(int64_t flat) const { return traversable_[flat] != 0; }
+  // True when the cell is traversable only as a narrow passage.
+  bool narrow(int64_t flat) const { return traversable_[flat] == kNarrow; }
+  // The cost of entering a traversable cell, per unit of step length.
+  float StepFactor(int64_t flat) const {
+    return traversable_[flat] == kNarrow ? static_cast<float>(options_.narrow_cost_factor) : 1.0f;
+  }
+  // The largest StepFactor of any cell.
+  float MaxStepFactor() const {
+    return has_narrow_ ? static_cast<float>(options_.narrow_cost_factor) : 1.0f;
+  }
   // As above; false for cells outside the map.
   bool Traversable(const grid::CellIndex& cell) const {
     return limits_.Contains(cell) && traversable(limits_.FlatIndex(cell));
@@ -99,7 +123,10 @@ class PlanningMap {
   grid::MapLimits limits_;
   TraversabilityOptions options_;
   std::vector<grid::CellState> states_;
+  static constexpr uint8_t kNarrow = 2;
+  bool has_narrow_ = false;
   std::vector<uint8_t> blocked_;
+  // 0: not traversable, 1: traversable, kNarrow: a narrow passage.
   std::vector<uint8_t> traversable_;
   std::vector<float> clearance_m_;
 };

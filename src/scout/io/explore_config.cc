@@ -16,6 +16,10 @@ void ReadGoals(YamlSection s, explore::GoalManagerOptions* o) {
   s.ReadNonNegative("replan_interval_s", &o->replan_interval_s);
   s.ReadInt("max_plan_attempts", &o->max_plan_attempts, 1);
   s.ReadNonNegative("finish_after_empty_s", &o->finish_after_empty_s);
+  s.ReadNonNegative("finish_with_frontier_after_s", &o->finish_with_frontier_after_s);
+  s.ReadNonNegative("goal_frontier_radius_m", &o->goal_frontier_radius_m);
+  s.ReadNonNegative("goal_switch_margin", &o->goal_switch_margin);
+  s.ReadNonNegative("goal_match_radius_m", &o->goal_match_radius_m);
   s.ReadBool("return_to_start", &o->return_to_start);
   {
     YamlSection f = s.Section("failed_goals");
@@ -99,6 +103,9 @@ void ReadExploreOptions(YamlSection s, exploration::ExploreOptions* o) {
     t.ReadNonNegative("safety_margin_m", &o->traversability.safety_margin_m);
     t.ReadBool("unknown_traversable", &o->traversability.unknown_traversable);
     t.ReadNonNegative("goal_snap_radius_m", &o->traversability.goal_snap_radius_m);
+    t.ReadNonNegative("narrow_margin_m", &o->traversability.narrow_margin_m);
+    t.ReadNonNegative("narrow_cost_factor", &o->traversability.narrow_cost_factor);
+    t.ReadNonNegative("escape_radius_m", &o->traversability.escape_radius_m);
     t.RejectUnknownKeys();
   }
   {
