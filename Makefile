@@ -1,6 +1,7 @@
 # Scout: every target does its own set-up (Debian packages, configure, build).
 #   make run    install, build, run the main job on the built-in default world
 #   make test   install, build, run the whole test suite
+#   make results / results-quick   the evaluation behind docs/RESULTS.md (full / small)
 # PRESET=release|debug|asan selects the CMake preset (default release).
 
 PRESET ?= release
@@ -8,7 +9,7 @@ JOBS ?= 2
 BUILD_DIR := build/$(PRESET)
 SCOUT := $(BUILD_DIR)/apps/scout/scout
 
-.PHONY: all setup configure build run test test-asan bench format clean
+.PHONY: all setup configure build run test test-asan bench results results-quick format clean
 
 all: build
 
@@ -32,6 +33,14 @@ test-asan:
 
 bench: build
 	$(BUILD_DIR)/bench/scout_bench
+
+# The whole evaluation (hours; resumable): out/results/, docs/RESULTS.md, docs/figures/.
+results: build
+	SCOUT=$(SCOUT) bash scripts/results
+
+# A few minutes: small worlds and prefixes into out/results-quick/, checked for tables and figures.
+results-quick: build
+	SCOUT=$(SCOUT) bash scripts/results --quick
 
 format:
 	find src apps bench -name '*.h' -o -name '*.cc' | xargs clang-format -i
