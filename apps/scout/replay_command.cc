@@ -119,6 +119,16 @@ int RunReplay(const ReplayArgs& args) {
   if (args.max_scans > 0 && dataset.scans.size() > static_cast<size_t>(args.max_scans)) {
     dataset.scans.resize(args.max_scans);
     if (!dataset.scan_poses.empty()) dataset.scan_poses.resize(args.max_scans);
+    if (!dataset.scan_odometry.empty()) dataset.scan_odometry.resize(args.max_scans);
+  }
+  // CARMEN logs carry the odometry pose in every laser line, at the scan's own
+  // time. That is the odometry local SLAM needs; the ODOM messages of the
+  // Radish "-corrected" logs restart from the corrected pose after each scan,
+  // so differences between them are not robot motion.
+  std::string odometry_source = dataset.odometry.empty() ? "none" : "odometry messages";
+  if (!dataset.scan_odometry.empty()) {
+    dataset.odometry = dataset.scan_odometry;
+    odometry_source = "laser lines";
   }
   if (dataset.odometry.empty()) {
     std::cerr << "scout: warning: " << args.dataset
@@ -172,6 +182,7 @@ int RunReplay(const ReplayArgs& args) {
   summary["format"] = dataset.format;
   summary["scans"] = num_scans;
   summary["odometry_readings"] = dataset.odometry.size();
+  summary["odometry_source"] = odometry_source;
   summary["odom_noise"] = args.odom_noise;
   summary["seed"] = args.seed;
   summary["warnings"] = dataset.warnings.size();

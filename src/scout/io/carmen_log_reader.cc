@@ -114,9 +114,14 @@ class CarmenParser {
                std::string(f[2 + k]) + "'";
       scan.ranges[k] = static_cast<float>(*r);
     }
-    double x, y, theta, time;
-    if (auto problem =
-            Numbers(f, {{*n + 2, &x}, {*n + 3, &y}, {*n + 4, &theta}, {*n + 8, &time}})) {
+    double x, y, theta, odom_x, odom_y, odom_theta, time;
+    if (auto problem = Numbers(f, {{*n + 2, &x},
+                                   {*n + 3, &y},
+                                   {*n + 4, &theta},
+                                   {*n + 5, &odom_x},
+                                   {*n + 6, &odom_y},
+                                   {*n + 7, &odom_theta},
+                                   {*n + 8, &time}})) {
       return problem;
     }
     const std::size_t steps = *n % 2 == 1 ? *n - 1 : *n;
@@ -124,7 +129,8 @@ class CarmenParser {
     scan.angle_min_rad = static_cast<float>(-kHalfPi);
     scan.angle_increment_rad = steps > 0 ? static_cast<float>(std::numbers::pi / steps) : 0.f;
     scan.range_max_m = kSickRangeMaxM;  // replaced in InferFlaserRangeMax()
-    if (AddScan(std::move(scan), geometry::Rigid2d(x, y, theta), "FLASER")) {
+    if (AddScan(std::move(scan), geometry::Rigid2d(x, y, theta),
+                geometry::Rigid2d(odom_x, odom_y, odom_theta), "FLASER")) {
       ++counts_->flaser;
       flaser_scans_.push_back(dataset_->scans.size() - 1);
     }
@@ -165,7 +171,8 @@ class CarmenParser {
     scan.angle_min_rad = static_cast<float>(start_angle);
     scan.angle_increment_rad = static_cast<float>(resolution);
     scan.range_max_m = static_cast<float>(max_range);
-    if (AddScan(std::move(scan), geometry::Rigid2d(x, y, theta), "ROBOTLASER1")) {
+    const geometry::Rigid2d robot_pose(x, y, theta);
+    if (AddScan(std::move(scan), robot_pose, robot_pose, "ROBOTLASER1")) {
       ++counts_->robotlaser1;
     }
     return std::nullopt;
@@ -210,7 +217,8 @@ class CarmenParser {
   }
 
   // Appends 'scan' unless it has no beams or goes back in time (warnings).
-  bool AddScan(sensor::LaserScan scan, const geometry::Rigid2d& pose, const char* kind) {
+  bool AddScan(sensor::LaserScan scan, const geometry::Rigid2d& pose,
+               const geometry::Rigid2d& odometry, const char* kind) {
     if (scan.ranges.empty()) {
       ++counts_->zero_beam_scans;
       warnings_.Add("scans without beams",
@@ -226,6 +234,7 @@ class CarmenParser {
                         " s); dropped (expected non-decreasing ipc_timestamp)");
       return false;
     }
+    dataset_->scan_odometry.push_back({scan.time_s, odometry});
     dataset_->scans.push_back(std::move(scan));
     dataset_->scan_poses.push_back(pose);
     return true;

@@ -108,10 +108,32 @@ TEST(CarmenLogReader, ReadsFlaserRobotLaserAndOdom) {
   EXPECT_DOUBLE_EQ(dataset.scan_poses[1].y(), 4.0);
   EXPECT_DOUBLE_EQ(dataset.scan_poses[1].theta(), -0.25);
 
+  // Each laser line's own odometry pose, stamped with its scan's time.
+  ASSERT_EQ(dataset.scan_odometry.size(), dataset.scans.size());
+  EXPECT_DOUBLE_EQ(dataset.scan_odometry[1].time_s, 2.0);
+  EXPECT_DOUBLE_EQ(dataset.scan_odometry[1].pose.x(), 3.0);
+  EXPECT_DOUBLE_EQ(dataset.scan_odometry[1].pose.theta(), -0.25);
+
   ASSERT_EQ(dataset.odometry.size(), 2u);
   EXPECT_DOUBLE_EQ(dataset.odometry[1].time_s, 2.5);
   EXPECT_DOUBLE_EQ(dataset.odometry[1].pose.y(), 0.5);
   EXPECT_DOUBLE_EQ(dataset.odometry[1].pose.theta(), 0.25);
+}
+
+TEST(CarmenLogReader, FlaserOdometryFieldsAreKeptApartFromThePose) {
+  const TestTempDirectory dir;
+  const fs::path path = dir.Write(
+      "odom.log", "FLASER 2 1.0 1.5 10 20 0.5 1 2 0.25 7.0 host 7.0\n" + Odom(9, 9, 0, 7.5));
+  const Dataset dataset = ReadCarmenLog(path);
+  ASSERT_EQ(dataset.scans.size(), 1u);
+  EXPECT_DOUBLE_EQ(dataset.scan_poses[0].x(), 10.0);
+  ASSERT_EQ(dataset.scan_odometry.size(), 1u);
+  EXPECT_DOUBLE_EQ(dataset.scan_odometry[0].time_s, 7.0);
+  EXPECT_DOUBLE_EQ(dataset.scan_odometry[0].pose.x(), 1.0);
+  EXPECT_DOUBLE_EQ(dataset.scan_odometry[0].pose.y(), 2.0);
+  EXPECT_DOUBLE_EQ(dataset.scan_odometry[0].pose.theta(), 0.25);
+  ASSERT_EQ(dataset.odometry.size(), 1u);  // the ODOM message, unchanged
+  EXPECT_DOUBLE_EQ(dataset.odometry[0].pose.x(), 9.0);
 }
 
 TEST(CarmenLogReader, MalformedLineIsSkippedWithAWarningNamingFileAndLine) {

@@ -30,6 +30,12 @@ struct Dataset {
   // 'scans'); in "-corrected" logs this is the corrected pose, usable as a
   // reference trajectory. Empty for bags.
   std::vector<geometry::Rigid2d> scan_poses;
+  // For CARMEN logs, the odometry pose each laser line carries (FLASER
+  // odom_x/y/theta, ROBOTLASER1 robot pose), stamped with the scan's time
+  // (same size as 'scans'). Unlike the ODOM messages of the Radish
+  // "-corrected" logs, which restart from the corrected pose after every scan,
+  // this is one consistent odometry trajectory. Empty for bags.
+  std::vector<sensor::Odometry> scan_odometry;
   // Problems that were worked around (skipped lines, dropped messages), each
   // naming the file and where possible the line.
   std::vector<std::string> warnings;
