@@ -121,9 +121,10 @@ write_document() {
     sweep_figures epsilon "${EPS[@]}"
     echo "## (d) Per-round frontier cost against world size"
     echo
-    echo "Generated museums (grids of halls, which scale; the office's inner block would become"
-    echo "one huge room) of growing side, one seed, without \`full\`: its cost grows with the square"
-    echo "of the map and would dominate the sweep, so there is no accuracy column here."
+    echo "Generated square museums (grids of halls, which scale; the office's inner block would"
+    echo "become one huge room) of growing side, one seed. frontier-bench always runs \`full\` as the"
+    echo "truth; its cost grows with the square of the map and dominates the wall time of the"
+    echo "large sizes."
     echo
     tables bench "${SIZE[@]}"
     sweep_figures size "${SIZE[@]}"
