@@ -40,6 +40,31 @@ void PrintWarnings(const io::Dataset& dataset) {
   }
 }
 
+// Nominal scan period given to logs whose own times cannot order the scans.
+constexpr double kRetimedScanPeriodS = 1.0;
+
+// Some Radish logs (csail, orebro) stamp most scans with the same time (or 0).
+// Odometry is matched to scans by time and nodes to reference poses by time,
+// so with repeated times the odometry of all but the first such scan is
+// dropped (local SLAM then predicts no motion for 0.5 m / 45 degree steps)
+// and nodes pair with the wrong reference poses. When most times repeat, the
+// scans and their laser-line odometry get synthetic times, one period apart.
+// Returns whether the dataset was re-timed.
+bool RetimeIfCoarse(io::Dataset* dataset) {
+  std::vector<sensor::LaserScan>& scans = dataset->scans;
+  size_t repeated = 0;
+  for (size_t i = 1; i < scans.size(); ++i) repeated += !(scans[i].time_s > scans[i - 1].time_s);
+  if (scans.size() < 2 || 2 * repeated < scans.size()) return false;
+  const bool with_odometry = dataset->scan_odometry.size() == scans.size();
+  for (size_t i = 0; i < scans.size(); ++i) {
+    scans[i].time_s = kRetimedScanPeriodS * static_cast<double>(i);
+    if (with_odometry) dataset->scan_odometry[i].time_s = scans[i].time_s;
+  }
+  // Other timed streams no longer line up with the scans.
+  if (!with_odometry) dataset->odometry.clear();
+  return true;
+}
+
 // Pairs every SLAM node with the reference pose of its scan.
 std::vector<io::PosePair> PairNodesWithReference(const io::Dataset& dataset,
                                                  const io::ScanReference& reference,
@@ -125,6 +150,10 @@ int RunReplay(const ReplayArgs& args) {
   // time. That is the odometry local SLAM needs; the ODOM messages of the
   // Radish "-corrected" logs restart from the corrected pose after each scan,
   // so differences between them are not robot motion.
+  if (RetimeIfCoarse(&dataset)) {
+    std::cerr << "scout: warning: " << args.dataset << ": most scans repeat the time before; "
+              << "replayed " << kRetimedScanPeriodS << " s apart\n";
+  }
   std::string odometry_source = dataset.odometry.empty() ? "none" : "odometry messages";
   if (!dataset.scan_odometry.empty()) {
     dataset.odometry = dataset.scan_odometry;
