@@ -46,7 +46,8 @@ std::string ReadFile(const fs::path& path) {
 // Writes a CARMEN log of one lap and a bit of the corridor loop: a 180-beam,
 // 1-degree FLASER scan every 0.2 m carrying the true pose, and ODOM lines whose
 // pose drifts (2 % scale error and a slow heading bias), as wheel odometry does.
-void WriteCorridorLog(const fs::path& path) {
+// With 'zero_times' every line is stamped 0, as in the Radish orebro log.
+void WriteCorridorLog(const fs::path& path, bool zero_times = false) {
   const std::vector<scout::slam::global_testing::Wall> walls =
       scout::slam::global_testing::CorridorLoop();
   std::mt19937 rng(5);
@@ -58,7 +59,7 @@ void WriteCorridorLog(const fs::path& path) {
   Rigid2d odometry;
   Rigid2d previous = scout::slam::global_testing::RoundedLoopPose(0.0);
   for (int i = 0; i * step_m < 1.2 * lap_m; ++i) {
-    const double t = 100.0 + 0.4 * i;
+    const double t = zero_times ? 0.01 : 100.0 + 0.4 * i;
     const Rigid2d pose = scout::slam::global_testing::RoundedLoopPose(i * step_m);
     const Rigid2d delta = previous.inverse() * pose;
     odometry = odometry * Rigid2d(1.02 * delta.x(), 1.02 * delta.y(), delta.theta() + 0.002);
@@ -89,6 +90,7 @@ class ReplayCli : public ::testing::Test {
     dir_ = new fs::path(fs::temp_directory_path() / ("scout_replay_test_" + std::to_string(rd())));
     fs::create_directories(*dir_);
     WriteCorridorLog(*dir_ / "corridor.log");
+    WriteCorridorLog(*dir_ / "zero_times.log", /*zero_times=*/true);
   }
   static void TearDownTestSuite() {
     fs::remove_all(*dir_);
@@ -134,6 +136,22 @@ TEST_F(ReplayCli, MapsTheLoopAccuratelyAndWritesEveryOutput) {
   int poses = 0;
   for (std::string line; std::getline(lines, line);) poses += !line.empty() && line[0] != '#';
   EXPECT_EQ(poses, s["slam"]["nodes"].get<int>());
+}
+
+// Scans with repeated times are replayed one period apart, so each still gets
+// its own odometry and reference pose (before, the odometry of repeated times
+// was dropped and the trajectory was compared with the first scan's pose).
+TEST_F(ReplayCli, LogWithoutTimesIsReplayedScanByScan) {
+  const std::string log = (Dir() / "zero_times.log").string();
+  const fs::path out = Dir() / "z";
+  const Result r =
+      RunScout("replay " + log + " --reference " + log + " --synchronous --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("replayed 1 s apart"), std::string::npos) << r.output;
+  const nlohmann::json s = nlohmann::json::parse(ReadFile(out / "summary.json"));
+  EXPECT_GT(s["slam"]["nodes"].get<int>(), 200);
+  EXPECT_EQ(s["reference"]["matched_scans"].get<int>(), s["slam"]["nodes"].get<int>());
+  EXPECT_LT(s["reference"]["ate_rmse_m"].get<double>(), 0.10) << s["reference"].dump();
 }
 
 TEST_F(ReplayCli, SynchronousModeIsDeterministic) {
