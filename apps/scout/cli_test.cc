@@ -2,7 +2,6 @@
 // outputs, on a small hand-made building map.
 
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -11,6 +10,7 @@
 #include <random>
 #include <sstream>
 
+#include "apps/scout/cli_test_util.h"
 #include "scout/common/atomic_file.h"
 #include "scout/grid/map_io.h"
 
@@ -18,21 +18,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-  int exit_code = -1;
-  std::string output;  // stdout and stderr
-};
-
-Result RunScout(const std::string& args) {
-  const std::string command = std::string(SCOUT_BINARY) + " " + args + " 2>&1";
-  Result r;
-  FILE* pipe = popen(command.c_str(), "r");
-  char buffer[4096];
-  while (pipe != nullptr && fgets(buffer, sizeof(buffer), pipe) != nullptr) r.output += buffer;
-  const int status = pipe != nullptr ? pclose(pipe) : -1;
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
+using Result = scout::testing::CliResult;
+using scout::testing::RunScout;
 
 class ScoutCli : public ::testing::Test {
  protected:

@@ -3,7 +3,6 @@
 // malformed line. The log's own scan poses are the reference trajectory.
 
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <cmath>
 #include <cstdio>
@@ -13,6 +12,7 @@
 #include <random>
 #include <sstream>
 
+#include "apps/scout/cli_test_util.h"
 #include "scout/slam/global_test_world.h"
 
 namespace {
@@ -20,21 +20,8 @@ namespace {
 namespace fs = std::filesystem;
 using scout::geometry::Rigid2d;
 
-struct Result {
-  int exit_code = -1;
-  std::string output;  // stdout and stderr
-};
-
-Result RunScout(const std::string& args) {
-  const std::string command = std::string(SCOUT_BINARY) + " " + args + " 2>&1";
-  Result r;
-  FILE* pipe = popen(command.c_str(), "r");
-  char buffer[4096];
-  while (pipe != nullptr && fgets(buffer, sizeof(buffer), pipe) != nullptr) r.output += buffer;
-  const int status = pipe != nullptr ? pclose(pipe) : -1;
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
+using Result = scout::testing::CliResult;
+using scout::testing::RunScout;
 
 std::string ReadFile(const fs::path& path) {
   std::ifstream in(path);

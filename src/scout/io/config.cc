@@ -32,16 +32,7 @@ void ReadSynthetic(YamlSection s, synthetic::SyntheticStreamOptions* o) {
   s.ReadPositive("angular_speed_radps", &o->angular_speed_radps);
   s.ReadInt("optimize_every_n_scans", &o->optimize_every_n_scans, 1);
   s.ReadInt("max_scans", &o->max_scans, 0);
-  {
-    YamlSection l = s.Section("lidar");
-    l.ReadPositive("range_max_m", &o->lidar.range_max_m);
-    l.ReadNonNegative("range_min_m", &o->lidar.range_min_m);
-    l.ReadPositive("fov_deg", &o->lidar.fov_deg);
-    l.ReadInt("beams", &o->lidar.beams, 2);
-    l.ReadNonNegative("range_noise_stddev_m", &o->lidar.range_noise_stddev_m);
-    l.ReadNonNegative("dropout_probability", &o->lidar.dropout_probability);
-    l.RejectUnknownKeys();
-  }
+  ReadLidarOptions(s.Section("lidar"), &o->lidar);
   {
     YamlSection r = s.Section("range_filter");
     r.ReadNonNegative("min_range_m", &o->range_filter.min_range_m);

@@ -120,6 +120,16 @@ void ReadExploreOptions(YamlSection s, exploration::ExploreOptions* o) {
   s.RejectUnknownKeys();
 }
 
+void ReadLidarOptions(YamlSection l, sim::LidarOptions* o) {
+  l.ReadPositive("range_max_m", &o->range_max_m);
+  l.ReadNonNegative("range_min_m", &o->range_min_m);
+  l.ReadPositive("fov_deg", &o->fov_deg);
+  l.ReadInt("beams", &o->beams, 2);
+  l.ReadNonNegative("range_noise_stddev_m", &o->range_noise_stddev_m);
+  l.ReadNonNegative("dropout_probability", &o->dropout_probability);
+  l.RejectUnknownKeys();
+}
+
 void ReadRobotOptions(YamlSection s, sim::SimulatedRobotOptions* o) {
   s.ReadPositive("radius_m", &o->robot.radius_m);
   s.ReadPositive("max_linear_speed_mps", &o->robot.max_linear_speed_mps);
@@ -132,16 +142,7 @@ void ReadRobotOptions(YamlSection s, sim::SimulatedRobotOptions* o) {
   double heading_deg = o->start_heading_rad / kRadPerDeg;
   s.ReadDouble("start_heading_deg", &heading_deg);
   o->start_heading_rad = heading_deg * kRadPerDeg;
-  {
-    YamlSection l = s.Section("lidar");
-    l.ReadPositive("range_max_m", &o->lidar.range_max_m);
-    l.ReadNonNegative("range_min_m", &o->lidar.range_min_m);
-    l.ReadPositive("fov_deg", &o->lidar.fov_deg);
-    l.ReadInt("beams", &o->lidar.beams, 2);
-    l.ReadNonNegative("range_noise_stddev_m", &o->lidar.range_noise_stddev_m);
-    l.ReadNonNegative("dropout_probability", &o->lidar.dropout_probability);
-    l.RejectUnknownKeys();
-  }
+  ReadLidarOptions(s.Section("lidar"), &o->lidar);
   {
     YamlSection d = s.Section("odometry");
     d.ReadNonNegative("trans_per_trans", &o->odometry.trans_per_trans);

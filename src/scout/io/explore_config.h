@@ -13,6 +13,9 @@ namespace scout::io {
 // The frontier strategy and goal policy are chosen on the command line.
 void ReadExploreOptions(YamlSection section, exploration::ExploreOptions* options);
 
+// Reads a "lidar" section (the simulated lidar of explore and frontier-bench).
+void ReadLidarOptions(YamlSection section, sim::LidarOptions* options);
+
 // Reads the "robot" section: the simulated base, its lidar and odometry.
 // Angles are given in degrees in the file (keys ending in _deg).
 void ReadRobotOptions(YamlSection section, sim::SimulatedRobotOptions* options);

@@ -1,0 +1,32 @@
+#ifndef SCOUT_APPS_SCOUT_CLI_TEST_UTIL_H_
+#define SCOUT_APPS_SCOUT_CLI_TEST_UTIL_H_
+
+// Test-only: runs the scout binary (SCOUT_BINARY, set by CMake) as a user
+// would, capturing its output and exit code.
+
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <string>
+
+namespace scout::testing {
+
+struct CliResult {
+  int exit_code = -1;
+  std::string output;  // stdout and stderr
+};
+
+inline CliResult RunScout(const std::string& args) {
+  const std::string command = std::string(SCOUT_BINARY) + " " + args + " 2>&1";
+  CliResult r;
+  FILE* pipe = popen(command.c_str(), "r");
+  char buffer[4096];
+  while (pipe != nullptr && fgets(buffer, sizeof(buffer), pipe) != nullptr) r.output += buffer;
+  const int status = pipe != nullptr ? pclose(pipe) : -1;
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+}  // namespace scout::testing
+
+#endif  // SCOUT_APPS_SCOUT_CLI_TEST_UTIL_H_
