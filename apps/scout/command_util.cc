@@ -5,6 +5,10 @@
 
 namespace scout::apps {
 
+io::ScoutConfig LoadConfigOrDefaults(const std::string& config_file) {
+  return config_file.empty() ? io::ScoutConfig{} : io::LoadConfig(config_file);
+}
+
 std::vector<std::string> SplitList(const std::string& list) {
   std::vector<std::string> items;
   std::stringstream ss(list);

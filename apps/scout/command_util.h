@@ -6,8 +6,13 @@
 #include <vector>
 
 #include "scout/frontier/frontier_engine.h"
+#include "scout/io/config.h"
 
 namespace scout::apps {
+
+// Returns the options of 'config_file', or the built-in defaults when it is
+// empty. Throws InputError for a bad file (see io::LoadConfig).
+io::ScoutConfig LoadConfigOrDefaults(const std::string& config_file);
 
 // Splits a comma-separated list, dropping empty items.
 std::vector<std::string> SplitList(const std::string& list);

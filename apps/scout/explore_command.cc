@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "apps/scout/command_util.h"
 #include "scout/common/atomic_file.h"
 #include "scout/common/error.h"
 #include "scout/exploration/exploration_loop.h"
@@ -38,8 +39,7 @@ Eigen::Vector2d ParseStart(const std::string& text) {
 }
 
 exploration::ExplorationOptions MakeOptions(const ExploreArgs& args) {
-  const io::ScoutConfig config =
-      args.config_file.empty() ? io::ScoutConfig{} : io::LoadConfig(args.config_file);
+  const io::ScoutConfig config = LoadConfigOrDefaults(args.config_file);
   exploration::ExplorationOptions o;
   o.explore = config.explore;
   o.robot = config.robot;

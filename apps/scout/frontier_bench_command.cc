@@ -46,8 +46,7 @@ CLI::App* AddFrontierBenchCommand(CLI::App& app, FrontierBenchArgs* args) {
 
 int RunFrontierBench(const FrontierBenchArgs& args) {
   const frontier::Stopwatch wall;
-  io::ScoutConfig config =
-      args.config_file.empty() ? io::ScoutConfig{} : io::LoadConfig(args.config_file);
+  io::ScoutConfig config = LoadConfigOrDefaults(args.config_file);
   if (args.epsilon_m) {
     config.frontier.epsilon_m = *args.epsilon_m;
   }

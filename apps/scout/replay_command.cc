@@ -132,8 +132,7 @@ CLI::App* AddReplayCommand(CLI::App& app, ReplayArgs* args) {
 
 int RunReplay(const ReplayArgs& args) {
   const frontier::Stopwatch wall;
-  io::ScoutConfig config =
-      args.config_file.empty() ? io::ScoutConfig{} : io::LoadConfig(args.config_file);
+  io::ScoutConfig config = LoadConfigOrDefaults(args.config_file);
   if (args.synchronous) config.slam.pose_graph.synchronous = true;
   // Validates options and names before any long work or any output.
   frontier::FrontierEngine engine(config.frontier, SplitList(args.strategies), /*evaluate=*/true);

@@ -2,11 +2,16 @@
 
 #include <sys/resource.h>
 
+#include <cerrno>
+#include <system_error>
+
 namespace scout {
 
 double PeakResidentSetMiB() {
   rusage usage{};
-  if (getrusage(RUSAGE_SELF, &usage) != 0) return 0.0;
+  if (getrusage(RUSAGE_SELF, &usage) != 0) {
+    throw std::system_error(errno, std::generic_category(), "getrusage");
+  }
   return static_cast<double>(usage.ru_maxrss) / 1024.0;
 }
 

@@ -7,35 +7,14 @@
 #include "scout/common/atomic_file.h"
 #include "scout/common/error.h"
 #include "scout/io/config.h"
+#include "scout/io/options_file_test_fixture.h"
 
 namespace scout::io {
 namespace {
 
 namespace fs = std::filesystem;
 
-class ExploreConfigTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    std::random_device rd;
-    dir_ = fs::temp_directory_path() / ("scout_explore_config_test_" + std::to_string(rd()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  ScoutConfig Load(const std::string& text) {
-    const fs::path p = dir_ / "options.yaml";
-    WriteTextFileAtomically(p, text);
-    return LoadConfig(p);
-  }
-  std::string ErrorOf(const std::string& text) {
-    try {
-      Load(text);
-    } catch (const InputError& e) {
-      return e.what();
-    }
-    return "";
-  }
-  fs::path dir_;
-};
+using ExploreConfigTest = testing::OptionsFileTest;
 
 TEST_F(ExploreConfigTest, DefaultFileMatchesTheBuiltInDefaults) {
   const ScoutConfig c = LoadConfig(fs::path(SCOUT_SOURCE_DIR) / "config" / "default.yaml");
