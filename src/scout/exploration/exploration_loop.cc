@@ -13,7 +13,7 @@ namespace {
 ExplorationOptions Prepared(const ExplorationOptions& options) {
   CheckExplorationOptions(options);
   ExplorationOptions o = options;
-  if (o.explore.synchronous_slam) o.slam.pose_graph.synchronous = true;
+  o.slam = EffectiveSlamOptions(options);
   return o;
 }
 

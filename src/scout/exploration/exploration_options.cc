@@ -56,6 +56,13 @@ void CheckExplorationOptions(const ExplorationOptions& options) {
     throw InputError("unknown goal policy '" + e.goal_policy + "': expected one of " +
                      JoinNames(explore::GoalPolicyNames()));
   }
+  if (!(e.local_slam.translation_weight >= 0.0) ||
+      !std::isfinite(e.local_slam.translation_weight)) {
+    throw InputError("explore.local_slam.translation_weight: expected a finite value >= 0");
+  }
+  if (!(e.local_slam.rotation_weight >= 0.0) || !std::isfinite(e.local_slam.rotation_weight)) {
+    throw InputError("explore.local_slam.rotation_weight: expected a finite value >= 0");
+  }
   sim::CheckSimulatedRobotOptions(options.robot);
   frontier::Validate(options.frontier);
   try {
@@ -64,7 +71,7 @@ void CheckExplorationOptions(const ExplorationOptions& options) {
     explore::Validate(e.planner);
     explore::Validate(e.follower);
     explore::Validate(e.policy);
-    slam::Validate(options.slam);
+    slam::Validate(EffectiveSlamOptions(options));
   } catch (const std::invalid_argument& error) {
     throw InputError(std::string("explore: ") + error.what());
   }
@@ -86,6 +93,16 @@ void CheckExplorationOptions(const ExplorationOptions& options) {
   if (options.start && !options.start->allFinite()) {
     throw InputError("--start: expected finite coordinates");
   }
+}
+
+slam::SlamOptions EffectiveSlamOptions(const ExplorationOptions& options) {
+  slam::SlamOptions slam = options.slam;
+  const ExploreOptions::LocalSlam& l = options.explore.local_slam;
+  slam.local.use_online_correlative_scan_matching = l.use_online_correlative_scan_matching;
+  slam.local.ceres_scan_matcher.translation_weight = l.translation_weight;
+  slam.local.ceres_scan_matcher.rotation_weight = l.rotation_weight;
+  if (options.explore.synchronous_slam) slam.pose_graph.synchronous = true;
+  return slam;
 }
 
 }  // namespace scout::exploration

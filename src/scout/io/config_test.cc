@@ -61,6 +61,23 @@ TEST_F(ConfigTest, SlamSectionOfTheDefaultFileMatchesTheBuiltInDefaults) {
                    d.pose_graph.constraint_builder.sampling_ratio);
   EXPECT_DOUBLE_EQ(c.pose_graph.constraint_builder.min_score,
                    d.pose_graph.constraint_builder.min_score);
+  EXPECT_DOUBLE_EQ(c.local.ceres_scan_matcher.unknown_probability,
+                   d.local.ceres_scan_matcher.unknown_probability);
+  EXPECT_DOUBLE_EQ(c.local.real_time_correlative_scan_matcher.unknown_probability,
+                   d.local.real_time_correlative_scan_matcher.unknown_probability);
+  const slam::ConstraintBuilderOptions& cb = c.pose_graph.constraint_builder;
+  const slam::ConstraintBuilderOptions& db = d.pose_graph.constraint_builder;
+  EXPECT_DOUBLE_EQ(cb.min_overlap, db.min_overlap);
+  EXPECT_DOUBLE_EQ(cb.max_see_through, db.max_see_through);
+  EXPECT_DOUBLE_EQ(cb.see_through_slack_m, db.see_through_slack_m);
+  EXPECT_DOUBLE_EQ(cb.min_search_window_m, db.min_search_window_m);
+  EXPECT_DOUBLE_EQ(cb.search_window_per_travel, db.search_window_per_travel);
+  EXPECT_DOUBLE_EQ(cb.fast_correlative_scan_matcher.ambiguity_radius_m,
+                   db.fast_correlative_scan_matcher.ambiguity_radius_m);
+  EXPECT_DOUBLE_EQ(cb.fast_correlative_scan_matcher.ambiguity_score_margin,
+                   db.fast_correlative_scan_matcher.ambiguity_score_margin);
+  EXPECT_DOUBLE_EQ(cb.ceres_scan_matcher.unknown_probability,
+                   db.ceres_scan_matcher.unknown_probability);
   EXPECT_DOUBLE_EQ(c.pose_graph.constraint_builder.loop_closure_translation_weight,
                    d.pose_graph.constraint_builder.loop_closure_translation_weight);
   EXPECT_EQ(c.pose_graph.constraint_builder.fast_correlative_scan_matcher.branch_and_bound_depth,

@@ -97,6 +97,14 @@ void ReadExploreOptions(YamlSection s, exploration::ExploreOptions* o) {
   o->initial_turn_rad = turn_deg * kRadPerDeg;
   s.ReadBool("evaluate_frontier", &o->evaluate_frontier);
   s.ReadBool("synchronous_slam", &o->synchronous_slam);
+  {
+    YamlSection l = s.Section("local_slam");
+    l.ReadBool("use_online_correlative_scan_matching",
+               &o->local_slam.use_online_correlative_scan_matching);
+    l.ReadNonNegative("translation_weight", &o->local_slam.translation_weight);
+    l.ReadNonNegative("rotation_weight", &o->local_slam.rotation_weight);
+    l.RejectUnknownKeys();
+  }
   ReadGoals(s.Section("goals"), &o->goals);
   {
     YamlSection t = s.Section("traversability");

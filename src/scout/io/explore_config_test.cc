@@ -25,6 +25,11 @@ TEST_F(ExploreConfigTest, DefaultFileMatchesTheBuiltInDefaults) {
   EXPECT_DOUBLE_EQ(c.explore.map_update_interval_s, d.explore.map_update_interval_s);
   EXPECT_NEAR(c.explore.initial_turn_rad, d.explore.initial_turn_rad, 1e-12);
   EXPECT_EQ(c.explore.synchronous_slam, d.explore.synchronous_slam);
+  EXPECT_EQ(c.explore.local_slam.use_online_correlative_scan_matching,
+            d.explore.local_slam.use_online_correlative_scan_matching);
+  EXPECT_DOUBLE_EQ(c.explore.local_slam.translation_weight,
+                   d.explore.local_slam.translation_weight);
+  EXPECT_DOUBLE_EQ(c.explore.local_slam.rotation_weight, d.explore.local_slam.rotation_weight);
   EXPECT_DOUBLE_EQ(c.explore.goals.progress_timeout_s, d.explore.goals.progress_timeout_s);
   EXPECT_EQ(c.explore.goals.return_to_start, d.explore.goals.return_to_start);
   EXPECT_EQ(c.explore.goals.failed_goals.max_failures, d.explore.goals.failed_goals.max_failures);

@@ -26,6 +26,7 @@ void ReadCeresScanMatcher(YamlSection s, slam::CeresScanMatcherOptions* o) {
   s.ReadNonNegative("translation_weight", &o->translation_weight);
   s.ReadNonNegative("rotation_weight", &o->rotation_weight);
   s.ReadInt("max_num_iterations", &o->max_num_iterations, 1);
+  s.ReadPositive("unknown_probability", &o->unknown_probability);
   s.RejectUnknownKeys();
 }
 
@@ -47,6 +48,7 @@ void ReadLocal(YamlSection s, slam::LocalSlamOptions* o) {
     ReadPositiveDegrees(c, "angular_search_window_deg", &m.angular_search_window_rad);
     c.ReadNonNegative("translation_delta_cost_weight", &m.translation_delta_cost_weight);
     c.ReadNonNegative("rotation_delta_cost_weight", &m.rotation_delta_cost_weight);
+    c.ReadPositive("unknown_probability", &m.unknown_probability);
     c.RejectUnknownKeys();
   }
   ReadCeresScanMatcher(s.Section("ceres_scan_matcher"), &o->ceres_scan_matcher);
@@ -81,6 +83,11 @@ void ReadPoseGraph(YamlSection s, slam::PoseGraphOptions* o) {
     c.ReadPositive("sampling_ratio", &b.sampling_ratio);
     c.ReadPositive("max_constraint_distance_m", &b.max_constraint_distance_m);
     c.ReadPositive("min_score", &b.min_score);
+    c.ReadNonNegative("min_overlap", &b.min_overlap);
+    c.ReadNonNegative("min_search_window_m", &b.min_search_window_m);
+    c.ReadNonNegative("search_window_per_travel", &b.search_window_per_travel);
+    c.ReadNonNegative("max_see_through", &b.max_see_through);
+    c.ReadNonNegative("see_through_slack_m", &b.see_through_slack_m);
     c.ReadNonNegative("loop_closure_translation_weight", &b.loop_closure_translation_weight);
     c.ReadNonNegative("loop_closure_rotation_weight", &b.loop_closure_rotation_weight);
     {
@@ -91,6 +98,9 @@ void ReadPoseGraph(YamlSection s, slam::PoseGraphOptions* o) {
                           &b.fast_correlative_scan_matcher.angular_search_window_rad);
       f.ReadInt("branch_and_bound_depth", &b.fast_correlative_scan_matcher.branch_and_bound_depth,
                 1);
+      f.ReadNonNegative("ambiguity_radius_m", &b.fast_correlative_scan_matcher.ambiguity_radius_m);
+      f.ReadNonNegative("ambiguity_score_margin",
+                        &b.fast_correlative_scan_matcher.ambiguity_score_margin);
       f.RejectUnknownKeys();
     }
     ReadCeresScanMatcher(c.Section("ceres_scan_matcher"), &b.ceres_scan_matcher);

@@ -14,30 +14,31 @@ namespace {
 
 // Presents the grid to ceres::BiCubicInterpolator as samples at cell centres
 // (row = y, column = x). Every integer index is valid: the outside of the grid
-// reads as kMinProbability, so points may be interpolated anywhere.
+// reads like unknown cells, so points may be interpolated anywhere.
 class GridSamples {
  public:
   enum { DATA_DIMENSION = 1 };
-  explicit GridSamples(const grid::ProbabilityGrid& grid) : grid_(grid) {}
+  GridSamples(const grid::ProbabilityGrid& grid, double unknown_probability)
+      : grid_(grid), unknown_probability_(unknown_probability) {}
 
   void GetValue(int row, int column, double* probability) const {
     const uint16_t v = grid_.value({column, row});
-    // Unknown counts as free (Cartographer's choice): matching into unexplored
-    // space must not be rewarded.
-    *probability = v == grid::kUnknownValue ? grid::kMinProbability : grid::ValueToProbability(v);
+    *probability = v == grid::kUnknownValue ? unknown_probability_ : grid::ValueToProbability(v);
   }
 
  private:
   const grid::ProbabilityGrid& grid_;
+  const double unknown_probability_;
 };
 
 class OccupiedSpaceCost {
  public:
-  OccupiedSpaceCost(double scale, const PointCloud& points, const grid::ProbabilityGrid& grid)
+  OccupiedSpaceCost(double scale, const PointCloud& points, const grid::ProbabilityGrid& grid,
+                    double unknown_probability)
       : scale_(scale),
         points_(points),
         limits_(grid.limits()),
-        samples_(grid),
+        samples_(grid, unknown_probability),
         interpolator_(samples_) {}
 
   template <typename T>
@@ -104,6 +105,9 @@ void Validate(const CeresScanMatcherOptions& options) {
   CheckOption(options.translation_weight >= 0.0, "translation_weight", options.translation_weight,
               ">= 0");
   CheckOption(options.rotation_weight >= 0.0, "rotation_weight", options.rotation_weight, ">= 0");
+  CheckOption(options.unknown_probability >= grid::kMinProbability - 1e-6 &&
+                  options.unknown_probability <= grid::kMaxProbability + 1e-6,
+              "unknown_probability", options.unknown_probability, "in [0.1, 0.9]");
   CheckOption(options.max_num_iterations >= 1, "max_num_iterations", options.max_num_iterations,
               ">= 1");
 }
@@ -124,7 +128,8 @@ geometry::Rigid2d CeresScanMatcher::Match(const Eigen::Vector2d& target_translat
       options_.occupied_space_weight / std::sqrt(static_cast<double>(points.size()));
   problem.AddResidualBlock(
       new ceres::AutoDiffCostFunction<OccupiedSpaceCost, ceres::DYNAMIC, 3>(
-          new OccupiedSpaceCost(scale, points, grid), static_cast<int>(points.size())),
+          new OccupiedSpaceCost(scale, points, grid, options_.unknown_probability),
+          static_cast<int>(points.size())),
       nullptr, pose);
   if (options_.translation_weight > 0.0) {
     problem.AddResidualBlock(

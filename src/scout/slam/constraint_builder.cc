@@ -1,9 +1,12 @@
 #include "scout/slam/constraint_builder.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 #include <utility>
+
+#include "scout/grid/probability_values.h"
 
 namespace scout::slam {
 namespace {
@@ -16,7 +19,49 @@ void RequirePositive(const char* key, double value) {
   }
 }
 
+// Cells this probable are walls for the free-space check: clearly above the
+// 0.5 of a cell seen equally often hit and passed.
+constexpr float kWallProbability = 0.6f;
+
 }  // namespace
+
+double ObservedFraction(const grid::ProbabilityGrid& grid, const geometry::Rigid2d& pose,
+                        const PointCloud& points) {
+  if (points.empty()) return 0.0;
+  const grid::MapLimits& limits = grid.limits();
+  int observed = 0;
+  for (const Eigen::Vector2d& p : points) {
+    const grid::CellIndex cell = limits.CellContaining(pose * p);
+    observed +=
+        limits.Contains(cell) && (grid.value(cell) & grid::kMaxValue) != grid::kUnknownValue;
+  }
+  return static_cast<double>(observed) / static_cast<double>(points.size());
+}
+
+double SeeThroughFraction(const grid::ProbabilityGrid& grid, const geometry::Rigid2d& pose,
+                          const PointCloud& points, double slack_m) {
+  if (points.empty()) return 0.0;
+  const grid::MapLimits& limits = grid.limits();
+  const uint16_t wall_value = grid::ProbabilityToValue(kWallProbability);
+  // Half-cell steps: every cell a ray crosses is visited (corners aside).
+  const double step_m = 0.5 * limits.resolution();
+  const Eigen::Vector2d origin = pose.translation();
+  int seeing_through = 0;
+  for (const Eigen::Vector2d& p : points) {
+    const Eigen::Vector2d end = pose * p;
+    const double length_m = (end - origin).norm();
+    const Eigen::Vector2d direction = (end - origin) / std::max(length_m, 1e-9);
+    for (double t = 0.0; t < length_m - slack_m; t += step_m) {
+      const grid::CellIndex cell = limits.CellContaining(origin + t * direction);
+      if (!limits.Contains(cell)) continue;
+      if ((grid.value(cell) & grid::kMaxValue) >= wall_value) {
+        ++seeing_through;
+        break;
+      }
+    }
+  }
+  return static_cast<double>(seeing_through) / static_cast<double>(points.size());
+}
 
 void Validate(const ConstraintBuilderOptions& options) {
   if (!(options.sampling_ratio > 0.0 && options.sampling_ratio <= 1.0)) {
@@ -29,6 +74,33 @@ void Validate(const ConstraintBuilderOptions& options) {
     throw std::invalid_argument(
         "constraint_builder option 'min_score': expected a value in [0, 1], got " +
         std::to_string(options.min_score));
+  }
+  if (!(options.min_overlap >= 0.0 && options.min_overlap <= 1.0)) {
+    throw std::invalid_argument(
+        "constraint_builder option 'min_overlap': expected a value in [0, 1], got " +
+        std::to_string(options.min_overlap));
+  }
+  if (!(options.max_see_through >= 0.0 && options.max_see_through <= 1.0)) {
+    throw std::invalid_argument(
+        "constraint_builder option 'max_see_through': expected a value in [0, 1], got " +
+        std::to_string(options.max_see_through));
+  }
+  if (!(options.see_through_slack_m >= 0.0 && std::isfinite(options.see_through_slack_m))) {
+    throw std::invalid_argument(
+        "constraint_builder option 'see_through_slack_m': expected a finite value >= 0, got " +
+        std::to_string(options.see_through_slack_m));
+  }
+  if (!(options.min_search_window_m >= 0.0 && std::isfinite(options.min_search_window_m))) {
+    throw std::invalid_argument(
+        "constraint_builder option 'min_search_window_m': expected a finite value >= 0, got " +
+        std::to_string(options.min_search_window_m));
+  }
+  if (!(options.search_window_per_travel >= 0.0 &&
+        std::isfinite(options.search_window_per_travel))) {
+    throw std::invalid_argument(
+        "constraint_builder option 'search_window_per_travel': expected a finite value >= 0, "
+        "got " +
+        std::to_string(options.search_window_per_travel));
   }
   RequirePositive("loop_closure_translation_weight", options.loop_closure_translation_weight);
   RequirePositive("loop_closure_rotation_weight", options.loop_closure_rotation_weight);
@@ -58,11 +130,23 @@ void ConstraintBuilder::AddFinishedSubmap(int submap_id,
                                             FixedRatioSampler(options_.sampling_ratio)});
 }
 
-bool ConstraintBuilder::ShouldSearch(int submap_id,
-                                     const geometry::Rigid2d& initial_relative_pose) {
+double ConstraintBuilder::SearchWindow(double travel_m) const {
+  const double full_m = options_.fast_correlative_scan_matcher.linear_search_window_m;
+  if (options_.search_window_per_travel <= 0.0) return full_m;
+  return std::min(full_m, options_.min_search_window_m +
+                              options_.search_window_per_travel * std::max(travel_m, 0.0));
+}
+
+bool ConstraintBuilder::ShouldSearch(int submap_id, const geometry::Rigid2d& initial_relative_pose,
+                                     const PointCloud& points) {
   const auto it = submaps_.find(submap_id);
   if (it == submaps_.end()) return false;
   if (initial_relative_pose.translation().norm() > options_.max_constraint_distance_m) {
+    return false;
+  }
+  if (options_.min_overlap > 0.0 &&
+      ObservedFraction(*it->second.grid, initial_relative_pose, points) < options_.min_overlap) {
+    ++num_without_overlap_;
     return false;
   }
   return it->second.sampler.Pulse();
@@ -70,20 +154,26 @@ bool ConstraintBuilder::ShouldSearch(int submap_id,
 
 std::optional<Constraint> ConstraintBuilder::Search(int submap_id, int node_id,
                                                     const geometry::Rigid2d& initial_relative_pose,
-                                                    const PointCloud& points) {
+                                                    const PointCloud& points, double travel_m) {
   const auto it = submaps_.find(submap_id);
   if (it == submaps_.end()) {
     throw std::invalid_argument("ConstraintBuilder::Search: submap " + std::to_string(submap_id) +
                                 " was not added as finished");
   }
   ++num_searches_;
-  const std::optional<ScanMatchResult> match =
-      it->second.matcher->Match(initial_relative_pose, points, options_.min_score);
+  const std::optional<ScanMatchResult> match = it->second.matcher->Match(
+      initial_relative_pose, points, options_.min_score, SearchWindow(travel_m));
   if (!match) return std::nullopt;
   // Branch and bound is only cell- and step-accurate; refine on the grid
   // itself, anchored at the branch-and-bound answer.
   const geometry::Rigid2d refined =
       ceres_scan_matcher_.Match(match->pose.translation(), match->pose, points, *it->second.grid);
+  if (options_.max_see_through < 1.0 &&
+      SeeThroughFraction(*it->second.grid, refined, points, options_.see_through_slack_m) >
+          options_.max_see_through) {
+    ++num_seeing_through_;
+    return std::nullopt;
+  }
   ++num_found_;
   return Constraint{submap_id,
                     node_id,

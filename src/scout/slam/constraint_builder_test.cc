@@ -42,7 +42,8 @@ TEST(ConstraintBuilderTest, FindsTheTrueRelativePoseFromAFarOffEstimate) {
   // 1.4 m and 14 degrees off: far beyond local scan matching, inside 7 m / 30 deg.
   const Rigid2d estimate = truth * Rigid2d(1.2, -0.7, 0.25);
   const std::optional<Constraint> c =
-      builder.Search(0, 17, estimate, global_testing::ScanReturns(scene.walls, node_world));
+      builder.Search(0, 17, estimate, global_testing::ScanReturns(scene.walls, node_world),
+                     /*travel_m=*/100.0);
   ASSERT_TRUE(c.has_value());
   EXPECT_EQ(c->submap_id, 0);
   EXPECT_EQ(c->node_id, 17);
@@ -67,8 +68,9 @@ TEST(ConstraintBuilderTest, RejectsAScanOfAnotherPlace) {
                           1.2 * Eigen::Vector2d(std::cos(b), std::sin(b))});
   }
   const Rigid2d estimate = scene.submap_frame.inverse() * Rigid2d(-3.0, -4.5, 0.0);
-  EXPECT_FALSE(builder.Search(0, 3, estimate, global_testing::ScanReturns(round_room, Rigid2d()))
-                   .has_value());
+  EXPECT_FALSE(
+      builder.Search(0, 3, estimate, global_testing::ScanReturns(round_room, Rigid2d()), 100.0)
+          .has_value());
   EXPECT_EQ(builder.num_searches(), 1);
   EXPECT_EQ(builder.num_constraints_found(), 0);
 }
@@ -77,17 +79,65 @@ TEST(ConstraintBuilderTest, SamplesAFixedRatioOfNearbyPairsPerSubmap) {
   const SubmapScene scene;
   ConstraintBuilderOptions options;
   options.sampling_ratio = 0.3;
+  options.min_overlap = 0.0;  // the sampler alone
   ConstraintBuilder builder(options);
-  EXPECT_FALSE(builder.ShouldSearch(0, Rigid2d()));  // not finished yet
+  const PointCloud points = global_testing::ScanReturns(scene.walls, Rigid2d(-5.0, -4.5, 0.0));
+  EXPECT_FALSE(builder.ShouldSearch(0, Rigid2d(), points));  // not finished yet
   builder.AddFinishedSubmap(0, scene.grid);
   builder.AddFinishedSubmap(1, scene.grid);
   // Far pairs are never searched and do not advance the sampler.
-  for (int i = 0; i < 5; ++i) EXPECT_FALSE(builder.ShouldSearch(0, Rigid2d(15.5, 0.0, 0.0)));
+  for (int i = 0; i < 5; ++i) {
+    EXPECT_FALSE(builder.ShouldSearch(0, Rigid2d(15.5, 0.0, 0.0), points));
+  }
   int searched = 0;
-  for (int i = 0; i < 100; ++i) searched += builder.ShouldSearch(0, Rigid2d(14.0, 3.0, 0.0));
+  for (int i = 0; i < 100; ++i)
+    searched += builder.ShouldSearch(0, Rigid2d(14.0, 3.0, 0.0), points);
   EXPECT_EQ(searched, 30);
   // Each submap samples on its own: its first eligible pair is searched.
-  EXPECT_TRUE(builder.ShouldSearch(1, Rigid2d(1.0, 0.0, 0.0)));
+  EXPECT_TRUE(builder.ShouldSearch(1, Rigid2d(1.0, 0.0, 0.0), points));
+}
+
+TEST(ConstraintBuilderTest, SearchesOnlyPairsWhoseScanOverlapsTheSubmap) {
+  const SubmapScene scene;
+  ConstraintBuilderOptions options;
+  options.sampling_ratio = 1.0;
+  ConstraintBuilder builder(options);
+  builder.AddFinishedSubmap(0, scene.grid);
+  const Rigid2d node_world(-5.0, -4.4, 0.1);
+  const PointCloud points = global_testing::ScanReturns(scene.walls, node_world);
+  const Rigid2d in_submap = scene.submap_frame.inverse() * node_world;
+  EXPECT_GT(ObservedFraction(*scene.grid, in_submap, points), 0.9);
+  EXPECT_TRUE(builder.ShouldSearch(0, in_submap, points));
+  // The same scan believed 10 m away, where the submap has seen nothing.
+  const Rigid2d elsewhere = in_submap * Rigid2d(0.0, 10.0, 0.0);
+  EXPECT_LT(ObservedFraction(*scene.grid, elsewhere, points), 0.05);
+  EXPECT_FALSE(builder.ShouldSearch(0, elsewhere, points));
+  EXPECT_EQ(builder.num_without_overlap(), 1);
+}
+
+TEST(ConstraintBuilderTest, RaysThroughKnownWallsMeanTheWrongPlace) {
+  const SubmapScene scene;
+  const Rigid2d node_world(-5.0, -4.4, 0.1);
+  const PointCloud points = global_testing::ScanReturns(scene.walls, node_world);
+  const Rigid2d truth = scene.submap_frame.inverse() * node_world;
+  EXPECT_LT(SeeThroughFraction(*scene.grid, truth, points, 0.15), 0.05);
+  // Turned by 90 degrees in place, the rays along the corridor now cross
+  // its walls.
+  EXPECT_GT(SeeThroughFraction(*scene.grid, truth * Rigid2d(0.0, 0.0, M_PI / 2), points, 0.15),
+            0.3);
+}
+
+TEST(ConstraintBuilderTest, SearchWindowGrowsWithTheTrajectoryBetween) {
+  ConstraintBuilderOptions options;
+  options.min_search_window_m = 1.0;
+  options.search_window_per_travel = 0.02;
+  options.fast_correlative_scan_matcher.linear_search_window_m = 7.0;
+  const ConstraintBuilder builder(options);
+  EXPECT_DOUBLE_EQ(builder.SearchWindow(0.0), 1.0);
+  EXPECT_DOUBLE_EQ(builder.SearchWindow(100.0), 3.0);
+  EXPECT_DOUBLE_EQ(builder.SearchWindow(1000.0), 7.0);  // capped
+  options.search_window_per_travel = 0.0;
+  EXPECT_DOUBLE_EQ(ConstraintBuilder(options).SearchWindow(0.0), 7.0);  // always the full window
 }
 
 TEST(ConstraintBuilderTest, FixedRatioSamplerIsDeterministic) {
@@ -108,7 +158,8 @@ TEST(ConstraintBuilderTest, RejectsBadOptionsAndUnknownSubmaps) {
   options.fast_correlative_scan_matcher.branch_and_bound_depth = 0;
   EXPECT_THROW(ConstraintBuilder{options}, std::invalid_argument);
   ConstraintBuilder builder({});
-  EXPECT_THROW(builder.Search(4, 0, Rigid2d(), {Eigen::Vector2d(1.0, 0.0)}), std::invalid_argument);
+  EXPECT_THROW(builder.Search(4, 0, Rigid2d(), {Eigen::Vector2d(1.0, 0.0)}, 0.0),
+               std::invalid_argument);
 }
 
 }  // namespace

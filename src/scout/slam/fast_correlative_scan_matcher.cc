@@ -195,7 +195,14 @@ std::optional<ScanMatchResult> FastCorrelativeScanMatcher::Match(
     const geometry::Rigid2d& initial_pose_estimate, const PointCloud& points,
     double min_score) const {
   return Search(initial_pose_estimate, points, options_.linear_search_window_m,
-                options_.angular_search_window_rad, min_score);
+                options_.angular_search_window_rad, min_score, /*check_ambiguity=*/true);
+}
+
+std::optional<ScanMatchResult> FastCorrelativeScanMatcher::Match(
+    const geometry::Rigid2d& initial_pose_estimate, const PointCloud& points, double min_score,
+    double linear_window_m) const {
+  return Search(initial_pose_estimate, points, linear_window_m, options_.angular_search_window_rad,
+                min_score, /*check_ambiguity=*/true);
 }
 
 std::optional<ScanMatchResult> FastCorrelativeScanMatcher::MatchFullSubmap(const PointCloud& points,
@@ -205,12 +212,13 @@ std::optional<ScanMatchResult> FastCorrelativeScanMatcher::MatchFullSubmap(const
   const double half_extent_m =
       0.5 * std::max(bounds.max.x() - bounds.min.x(), bounds.max.y() - bounds.min.y());
   return Search(geometry::Rigid2d(center, 0.0), points, half_extent_m + limits_.resolution(),
-                std::numbers::pi, min_score);
+                std::numbers::pi, min_score, /*check_ambiguity=*/true);
 }
 
 std::optional<ScanMatchResult> FastCorrelativeScanMatcher::Search(
     const geometry::Rigid2d& initial_pose_estimate, const PointCloud& points,
-    double linear_window_m, double angular_window_rad, double min_score) const {
+    double linear_window_m, double angular_window_rad, double min_score,
+    bool check_ambiguity) const {
   if (points.empty()) return std::nullopt;
   const double resolution = limits_.resolution();
   double max_range_m = 0.0;
@@ -241,60 +249,97 @@ std::optional<ScanMatchResult> FastCorrelativeScanMatcher::Search(
   }
 
   const auto by_bound = [](const Candidate& a, const Candidate& b) { return a.sum > b.sum; };
-  // Bounds below this sum cannot reach min_score (ScoreOfSum is increasing).
-  const auto below_threshold = [&](int64_t sum) {
-    return ScoreOfSum(sum, points.size()) < min_score;
-  };
-
   const int top = static_cast<int>(coarse_.size());
   const int top_step = 1 << top;
-  std::vector<Candidate> roots;
-  for (int a = 0; a < static_cast<int>(scans.size()); ++a) {
-    for (int x = -linear_bound; x <= linear_bound; x += top_step) {
-      for (int y = -linear_bound; y <= linear_bound; y += top_step) {
-        const Candidate c{a, x, y, Score(top, scans[a], x, y)};
-        // Hopeless roots never need sorting.
-        if (!below_threshold(c.sum)) roots.push_back(c);
+
+  // Returns the best candidate with a sum of at least 'min_sum' outside
+  // 'exclusion' (none if radius < 0).
+  const auto best_candidate = [&](int64_t min_sum,
+                                  const Exclusion& exclusion) -> std::optional<Candidate> {
+    const double radius_sq = exclusion.radius * exclusion.radius;
+    const auto excluded = [&](int x, int y) {
+      const double dx = x - exclusion.x;
+      const double dy = y - exclusion.y;
+      return exclusion.radius >= 0.0 && dx * dx + dy * dy <= radius_sq;
+    };
+    // A block [x, x + size) x [y, y + size) wholly inside the exclusion disc
+    // holds no answer (its four corners inside suffice: the disc is convex).
+    const auto block_excluded = [&](int x, int y, int size) {
+      return excluded(x, y) && excluded(x + size - 1, y) && excluded(x, y + size - 1) &&
+             excluded(x + size - 1, y + size - 1);
+    };
+    std::vector<Candidate> roots;
+    for (int a = 0; a < static_cast<int>(scans.size()); ++a) {
+      for (int x = -linear_bound; x <= linear_bound; x += top_step) {
+        for (int y = -linear_bound; y <= linear_bound; y += top_step) {
+          if (block_excluded(x, y, top_step)) continue;
+          const Candidate c{a, x, y, Score(top, scans[a], x, y)};
+          // Hopeless roots never need sorting.
+          if (c.sum >= min_sum) roots.push_back(c);
+        }
       }
+    }
+    std::sort(roots.begin(), roots.end(), by_bound);
+
+    std::optional<Candidate> best;
+    // Depth-first, best bound first (Hess et al. 2016, algorithm 3): a node is
+    // expanded only if its bound beats both the threshold and the best leaf.
+    const auto branch = [&](auto&& self, const Candidate* candidates, size_t count,
+                            int depth) -> void {
+      for (size_t i = 0; i < count; ++i) {
+        const Candidate& c = candidates[i];
+        if (c.sum < min_sum) return;
+        if (best.has_value() && c.sum <= best->sum) return;
+        if (depth == 0) {
+          if (excluded(c.x, c.y)) continue;
+          best = c;
+          continue;  // sorted: later siblings cannot beat this leaf
+        }
+        const int half = 1 << (depth - 1);
+        std::array<Candidate, 4> children;
+        size_t num_children = 0;
+        for (const int dx : {0, half}) {
+          if (c.x + dx > linear_bound) continue;
+          for (const int dy : {0, half}) {
+            if (c.y + dy > linear_bound) continue;
+            if (block_excluded(c.x + dx, c.y + dy, half)) continue;
+            children[num_children++] = {c.angle_index, c.x + dx, c.y + dy,
+                                        Score(depth - 1, scans[c.angle_index], c.x + dx, c.y + dy)};
+          }
+        }
+        // Insertion sort: at most four elements (and std::sort's 16-element
+        // threshold trips GCC's array-bounds analysis here).
+        for (size_t j = 1; j < num_children; ++j) {
+          for (size_t k = j; k > 0 && by_bound(children[k], children[k - 1]); --k) {
+            std::swap(children[k], children[k - 1]);
+          }
+        }
+        self(self, children.data(), num_children, depth - 1);
+      }
+    };
+    branch(branch, roots.data(), roots.size(), top);
+    return best;
+  };
+
+  // The smallest sum whose score reaches 'score' (ScoreOfSum is increasing).
+  const auto min_sum_for = [&](double score) {
+    const double per_point =
+        kMidValue + (score - 0.5) / kProbabilityPerValue;  // inverse of ScoreOfSum
+    int64_t sum = static_cast<int64_t>(std::floor(per_point * static_cast<double>(points.size())));
+    while (ScoreOfSum(sum, points.size()) < score) ++sum;
+    while (sum > 0 && ScoreOfSum(sum - 1, points.size()) >= score) --sum;
+    return sum;
+  };
+
+  const std::optional<Candidate> best =
+      best_candidate(min_sum_for(min_score), Exclusion{0, 0, -1.0});
+  if (best.has_value() && check_ambiguity && options_.ambiguity_radius_m > 0.0) {
+    const double best_score = ScoreOfSum(best->sum, points.size());
+    const Exclusion around_best{best->x, best->y, options_.ambiguity_radius_m / resolution};
+    if (best_candidate(min_sum_for(best_score - options_.ambiguity_score_margin), around_best)) {
+      return std::nullopt;  // a distant pose fits about as well: ambiguous
     }
   }
-  std::sort(roots.begin(), roots.end(), by_bound);
-
-  std::optional<Candidate> best;
-  // Depth-first, best bound first (Hess et al. 2016, algorithm 3): a node is
-  // expanded only if its bound beats both the threshold and the best leaf.
-  const auto branch = [&](auto&& self, const Candidate* candidates, size_t count,
-                          int depth) -> void {
-    for (size_t i = 0; i < count; ++i) {
-      const Candidate& c = candidates[i];
-      if (below_threshold(c.sum)) return;
-      if (best.has_value() && c.sum <= best->sum) return;
-      if (depth == 0) {
-        best = c;
-        continue;  // sorted: later siblings cannot beat this leaf
-      }
-      const int half = 1 << (depth - 1);
-      std::array<Candidate, 4> children;
-      size_t num_children = 0;
-      for (const int dx : {0, half}) {
-        if (c.x + dx > linear_bound) continue;
-        for (const int dy : {0, half}) {
-          if (c.y + dy > linear_bound) continue;
-          children[num_children++] = {c.angle_index, c.x + dx, c.y + dy,
-                                      Score(depth - 1, scans[c.angle_index], c.x + dx, c.y + dy)};
-        }
-      }
-      // Insertion sort: at most four elements (and std::sort's 16-element
-      // threshold trips GCC's array-bounds analysis here).
-      for (size_t j = 1; j < num_children; ++j) {
-        for (size_t k = j; k > 0 && by_bound(children[k], children[k - 1]); --k) {
-          std::swap(children[k], children[k - 1]);
-        }
-      }
-      self(self, children.data(), num_children, depth - 1);
-    }
-  };
-  branch(branch, roots.data(), roots.size(), top);
   if (!best.has_value()) return std::nullopt;
   const Eigen::Vector2d translation =
       initial_pose_estimate.translation() + resolution * Eigen::Vector2d(best->x, best->y);

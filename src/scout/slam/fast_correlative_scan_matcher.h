@@ -22,6 +22,13 @@ struct FastCorrelativeScanMatcherOptions {
   double angular_search_window_rad = 30.0 * std::numbers::pi / 180.0;
   // Number of precomputed grids; the coarsest pools 2^(depth-1) cells (ALGORITHMS §7: 7).
   int branch_and_bound_depth = 7;
+  // Ambiguity test: a match is rejected when a candidate farther than
+  // ambiguity_radius_m from it scores within ambiguity_score_margin of it.
+  // Corridors and rows of identical rooms otherwise produce confident loop
+  // closures metres off along the corridor (measured in the simulated
+  // office: doors and rooms repeating along a corridor). 0 disables the test.
+  double ambiguity_radius_m = 0.3;
+  double ambiguity_score_margin = 0.05;
 };
 
 // Throws std::invalid_argument naming the first invalid option.
@@ -55,9 +62,15 @@ class FastCorrelativeScanMatcher {
 
   // Best pose (grid frame) of 'points' (given in the scan frame) within the
   // window around 'initial_pose_estimate', score = mean probability of the
-  // points' cells; nullopt if best score < min_score (or 'points' is empty).
+  // points' cells; nullopt if best score < min_score (or 'points' is empty)
+  // or if the match is ambiguous (see FastCorrelativeScanMatcherOptions).
   std::optional<ScanMatchResult> Match(const geometry::Rigid2d& initial_pose_estimate,
                                        const PointCloud& points, double min_score) const;
+  // As Match with a translation window of 'linear_window_m' instead of the
+  // options' (the angular window stays).
+  std::optional<ScanMatchResult> Match(const geometry::Rigid2d& initial_pose_estimate,
+                                       const PointCloud& points, double min_score,
+                                       double linear_window_m) const;
 
   // As Match, but searching every rotation and every translation that keeps
   // the grid's centre within the window centred on it (global localisation).
@@ -87,9 +100,17 @@ class FastCorrelativeScanMatcher {
   };
   struct Candidate;
 
+  // Candidates whose translation offset lies within 'radius' cells of
+  // ('x', 'y') are not taken as answers.
+  struct Exclusion {
+    int x = 0, y = 0;
+    double radius = 0.0;
+  };
+
   std::optional<ScanMatchResult> Search(const geometry::Rigid2d& initial_pose_estimate,
                                         const PointCloud& points, double linear_window_m,
-                                        double angular_window_rad, double min_score) const;
+                                        double angular_window_rad, double min_score,
+                                        bool check_ambiguity) const;
 
   FastCorrelativeScanMatcherOptions options_;
   grid::MapLimits limits_;

@@ -72,6 +72,7 @@ RC_GTEST_PROP(FastCorrelativeScanMatcherProperty, EqualsBruteForceOnSmallWindows
   options.linear_search_window_m = *rc::gen::inRange(0, 80) / 100.0;
   options.angular_search_window_rad = *rc::gen::inRange(0, 30) / 100.0;
   options.branch_and_bound_depth = *rc::gen::inRange(1, 6);
+  options.ambiguity_radius_m = 0.0;  // brute force knows no ambiguity test
   const FastCorrelativeScanMatcher matcher(grid, options);
 
   const double expected = BruteForceBestScore(grid, initial, points, options.linear_search_window_m,
@@ -122,6 +123,39 @@ TEST(FastCorrelativeScanMatcherTest, RejectsPoorMatchesAndInvalidOptions) {
   FastCorrelativeScanMatcherOptions options;
   options.branch_and_bound_depth = 0;
   EXPECT_THROW(FastCorrelativeScanMatcher(grid, options), std::invalid_argument);
+}
+
+// Two identical closed rooms side by side: a scan from inside one fits the
+// other just as well, the perceptual aliasing of periodic buildings.
+TEST(FastCorrelativeScanMatcherTest, RejectsAmbiguousMatchesWhenAskedTo) {
+  std::vector<testing::Segment> walls;
+  testing::AddBox(-3.0, -1.2, -0.6, 1.3, &walls);
+  testing::AddBox(0.6, -1.2, 3.0, 1.3, &walls);
+  testing::AddBox(-2.2, 0.2, -1.9, 0.6, &walls);  // a cupboard in each room
+  testing::AddBox(1.4, 0.2, 1.7, 0.6, &walls);
+  grid::ProbabilityGrid grid(grid::MapLimits(0.05, {-3.5, -1.7}, 140, 60));
+  const grid::RangeDataInserter inserter({});
+  for (const double x : {-1.6, -1.2, 2.0, 2.4}) {
+    const Rigid2d pose(x, -0.4, 0.0);
+    const sensor::RangeData data = sensor::ToRangeData(testing::CastScan(walls, pose), {});
+    inserter.Insert(pose.translation(), TransformPointCloud(data.returns, pose),
+                    TransformPointCloud(data.misses, pose), &grid);
+  }
+  const Rigid2d truth(-1.4, -0.5, 0.0);
+  const PointCloud points = testing::ScanPoints(walls, truth);
+  FastCorrelativeScanMatcherOptions options;
+  options.ambiguity_radius_m = 0.0;
+  const std::optional<ScanMatchResult> blind =
+      FastCorrelativeScanMatcher(grid, options).Match(truth, points, 0.55);
+  ASSERT_TRUE(blind.has_value());  // one of the two rooms
+  options.ambiguity_radius_m = 0.3;
+  options.ambiguity_score_margin = 0.05;
+  EXPECT_FALSE(FastCorrelativeScanMatcher(grid, options).Match(truth, points, 0.55).has_value());
+  // A window too small to reach the other room leaves nothing to confuse.
+  const std::optional<ScanMatchResult> near =
+      FastCorrelativeScanMatcher(grid, options).Match(truth, points, 0.55, 1.0);
+  ASSERT_TRUE(near.has_value());
+  EXPECT_LT((near->pose.translation() - truth.translation()).norm(), 0.06) << near->pose;
 }
 
 }  // namespace

@@ -90,6 +90,8 @@ std::vector<TimedPose> MapBuilder::GetTrajectory() const { return pose_graph_->G
 
 std::vector<SubmapState> MapBuilder::GetSubmaps() const { return pose_graph_->GetSubmaps(); }
 
+std::vector<Constraint> MapBuilder::GetConstraints() const { return pose_graph_->GetConstraints(); }
+
 SlamStats MapBuilder::GetStats() const {
   const PoseGraphStats graph = pose_graph_->GetStats();
   SlamStats stats;

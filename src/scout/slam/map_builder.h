@@ -77,6 +77,9 @@ class MapBuilder {
   std::vector<TimedPose> GetTrajectory() const;
   // Returns poses and latest grids of all submaps (e.g. for the fused map).
   std::vector<SubmapState> GetSubmaps() const;
+  // Returns every constraint of the pose graph (intra-submap and loop
+  // closures), e.g. to check loop closures against a simulator's truth.
+  std::vector<Constraint> GetConstraints() const;
   SlamStats GetStats() const;
   const LocalTrajectoryBuilder& local_trajectory_builder() const { return local_; }
 

@@ -74,6 +74,11 @@ int PoseGraph::AddNode(double time_s, const geometry::Rigid2d& local_pose, const
     Node node;
     node.data = {time_s, local_pose, local_to_global_ * local_pose, odometry_pose};
     node.points = std::move(thinned);
+    if (!nodes_.empty()) {
+      const Node& previous = nodes_.back();
+      node.travel_m = previous.travel_m +
+                      (local_pose.translation() - previous.data.local_pose.translation()).norm();
+    }
     for (const InsertedSubmap& inserted : insertion_submaps) {
       if (inserted.id == static_cast<int>(submaps_.size())) {
         // A new submap starts where local SLAM put it, seen through the
@@ -167,15 +172,23 @@ bool PoseGraph::IsNeighbour(const std::vector<int>& node_submaps, int submap_id)
 void PoseGraph::SearchPair(int node_id, int submap_id) {
   geometry::Rigid2d initial_relative_pose;
   std::shared_ptr<const PointCloud> points;
+  double travel_m = 0.0;
   {
     std::lock_guard<std::mutex> lock(mutex_);
     initial_relative_pose =
         submaps_[submap_id].state.global_pose.inverse() * nodes_[node_id].data.global_pose;
     points = nodes_[node_id].points;
+    // Trajectory between the node and the nearest of the submap's nodes
+    // (inserted consecutively, so their travel is an interval).
+    const std::vector<int>& members = submaps_[submap_id].node_ids;
+    const double node_travel_m = nodes_[node_id].travel_m;
+    const double first_m = nodes_[members.front()].travel_m;
+    const double last_m = nodes_[members.back()].travel_m;
+    travel_m = std::max({0.0, first_m - node_travel_m, node_travel_m - last_m});
   }
-  if (!constraint_builder_.ShouldSearch(submap_id, initial_relative_pose)) return;
+  if (!constraint_builder_.ShouldSearch(submap_id, initial_relative_pose, *points)) return;
   const std::optional<Constraint> found =
-      constraint_builder_.Search(submap_id, node_id, initial_relative_pose, *points);
+      constraint_builder_.Search(submap_id, node_id, initial_relative_pose, *points, travel_m);
   std::lock_guard<std::mutex> lock(mutex_);
   ++stats_.num_searches;
   if (found) {

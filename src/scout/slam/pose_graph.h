@@ -122,6 +122,7 @@ class PoseGraph {
   struct Node {
     OptimizationNode data;
     std::shared_ptr<const PointCloud> points;  // thinned, robot frame
+    double travel_m = 0.0;                     // local trajectory length up to this node
     std::vector<int> submap_ids;               // insertion submaps
   };
   struct Submap {

@@ -33,6 +33,9 @@ void Validate(const RealTimeCorrelativeScanMatcherOptions& options) {
               options.translation_delta_cost_weight, ">= 0");
   CheckOption(options.rotation_delta_cost_weight >= 0.0, "rotation_delta_cost_weight",
               options.rotation_delta_cost_weight, ">= 0");
+  CheckOption(options.unknown_probability >= grid::kMinProbability - 1e-6 &&
+                  options.unknown_probability <= grid::kMaxProbability + 1e-6,
+              "unknown_probability", options.unknown_probability, "in [0.1, 0.9]");
 }
 
 RealTimeCorrelativeScanMatcher::RealTimeCorrelativeScanMatcher(
@@ -57,23 +60,24 @@ ScanMatchResult RealTimeCorrelativeScanMatcher::Match(
       static_cast<int>(std::ceil(options_.linear_search_window_m / resolution));
   // Probability is linear in the raw cell value, so candidates sum raw values
   // (an integer, cheaper than decoding each cell) and decode the mean once.
-  // Unknown and outside cells count as value 1, i.e. kMinProbability: a scan
-  // must be pulled onto observed walls, not into unexplored space.
+  // Unknown and outside cells count as the value of unknown_probability.
   const std::vector<uint16_t>& values = grid.values();
+  const int64_t unknown_value =
+      grid::ProbabilityToValue(static_cast<float>(options_.unknown_probability));
   const auto raw_value = [&](int x, int y) -> int64_t {
-    if (x < 0 || y < 0 || x >= limits.width() || y >= limits.height()) return 1;
+    if (x < 0 || y < 0 || x >= limits.width() || y >= limits.height()) return unknown_value;
     const int v = values[static_cast<size_t>(y) * limits.width() + x] & grid::kMaxValue;
-    return v == grid::kUnknownValue ? 1 : v;
+    return v == grid::kUnknownValue ? unknown_value : v;
   };
   const double min_probability = grid::ValueToProbability(1);
   const double probability_per_value =
       (grid::ValueToProbability(grid::kMaxValue) - min_probability) / (grid::kMaxValue - 1);
 
-  // Raw value with unknown as 1, without the bounds check (the caller knows
-  // the cell is inside): branch-free, as most candidates lie wholly inside.
+  // Raw value with unknown replaced, without the bounds check (the caller
+  // knows the cell is inside): branch-free, as most candidates lie wholly inside.
   const auto inside_value = [&](int x, int y) -> int64_t {
     const int v = values[static_cast<size_t>(y) * limits.width() + x] & grid::kMaxValue;
-    return v + (v == grid::kUnknownValue);
+    return v + (v == grid::kUnknownValue) * unknown_value;
   };
 
   std::vector<grid::CellIndex> cells(points.size());

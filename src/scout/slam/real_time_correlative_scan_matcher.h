@@ -18,6 +18,9 @@ struct RealTimeCorrelativeScanMatcherOptions {
   // Penalties for moving away from the initial estimate (per m², per rad²).
   double translation_delta_cost_weight = 0.1;
   double rotation_delta_cost_weight = 0.1;
+  // Probability that unknown cells (and the grid's outside) score; see
+  // CeresScanMatcherOptions::unknown_probability. In [0.1, 0.9].
+  double unknown_probability = 0.5;
 };
 
 // Throws std::invalid_argument naming the first invalid option.
