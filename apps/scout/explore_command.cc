@@ -236,7 +236,8 @@ int RunExplore(const ExploreArgs& args) {
             << "goals: " << result.counters.goals_issued << " issued, "
             << result.counters.goals_reached << " reached, " << result.counters.goals_failed
             << " failed, " << result.unreachable_goals << " unreachable in truth; collisions "
-            << result.collisions << "; ATE RMSE " << std::setprecision(3) << ate_rmse_m << " m\n"
+            << result.collisions << "; ATE RMSE " << std::setprecision(3) << ate_rmse_m << " m; "
+            << result.frontier_left << " frontier points left unreached\n"
             << "outputs: " << (out.path() / "summary.json").string()
             << ", map.yaml, map.pgm, map.png, trajectory.tum, truth.tum, frontier.csv, "
                "coverage.csv\n";

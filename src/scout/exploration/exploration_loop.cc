@@ -166,9 +166,11 @@ std::optional<Termination> ExplorationLoop::CheckTermination(
     const explore::ExploreStatus& status) const {
   const double t = robot_.sim_time_s();
   if (status.state == explore::ExploreState::kFinished) {
-    // Finished with frontier points left means it gave up on them (none was
-    // reachable for a sustained time): not a complete exploration.
-    return status.frontier_left > 0 ? Termination::kNoProgress : Termination::kComplete;
+    // The goal manager finishes when no navigation point is left to try
+    // (ALGORITHMS section 6): frontier points may remain that no plan on the
+    // fused map reaches, or that stayed after the robot drove to them. They
+    // are reported as frontier_left.
+    return Termination::kComplete;
   }
   if (t >= options_.explore.max_sim_time_s) return Termination::kMaxSimTime;
   if (t - last_gain_s_ >= options_.explore.no_progress_timeout_s) return Termination::kNoProgress;
