@@ -72,6 +72,12 @@ TEST_F(ConfigTest, SlamSectionOfTheDefaultFileMatchesTheBuiltInDefaults) {
   EXPECT_DOUBLE_EQ(cb.see_through_slack_m, db.see_through_slack_m);
   EXPECT_DOUBLE_EQ(cb.min_search_window_m, db.min_search_window_m);
   EXPECT_DOUBLE_EQ(cb.search_window_per_travel, db.search_window_per_travel);
+  EXPECT_DOUBLE_EQ(cb.min_angular_search_window_deg, db.min_angular_search_window_deg);
+  EXPECT_DOUBLE_EQ(cb.angular_search_window_deg_per_m, db.angular_search_window_deg_per_m);
+  EXPECT_EQ(cb.min_num_points, db.min_num_points);
+  EXPECT_DOUBLE_EQ(c.pose_graph.outlier_translation_m, d.pose_graph.outlier_translation_m);
+  EXPECT_DOUBLE_EQ(c.pose_graph.outlier_rotation_deg, d.pose_graph.outlier_rotation_deg);
+  EXPECT_EQ(c.pose_graph.max_outlier_rounds, d.pose_graph.max_outlier_rounds);
   EXPECT_DOUBLE_EQ(cb.fast_correlative_scan_matcher.ambiguity_radius_m,
                    db.fast_correlative_scan_matcher.ambiguity_radius_m);
   EXPECT_DOUBLE_EQ(cb.fast_correlative_scan_matcher.ambiguity_score_margin,

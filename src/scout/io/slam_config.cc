@@ -77,6 +77,9 @@ void ReadPoseGraph(YamlSection s, slam::PoseGraphOptions* o) {
   s.ReadNonNegative("intra_submap_rotation_weight", &o->intra_submap_rotation_weight);
   ReadAdaptiveVoxelFilter(s.Section("loop_closure_voxel_filter"), &o->loop_closure_voxel_filter);
   s.ReadInt("skip_neighbour_submaps", &o->skip_neighbour_submaps, 0);
+  s.ReadPositive("outlier_translation_m", &o->outlier_translation_m);
+  s.ReadPositive("outlier_rotation_deg", &o->outlier_rotation_deg);
+  s.ReadInt("max_outlier_rounds", &o->max_outlier_rounds, 0);
   {
     YamlSection c = s.Section("constraint_builder");
     slam::ConstraintBuilderOptions& b = o->constraint_builder;
@@ -86,6 +89,9 @@ void ReadPoseGraph(YamlSection s, slam::PoseGraphOptions* o) {
     c.ReadNonNegative("min_overlap", &b.min_overlap);
     c.ReadNonNegative("min_search_window_m", &b.min_search_window_m);
     c.ReadNonNegative("search_window_per_travel", &b.search_window_per_travel);
+    c.ReadNonNegative("min_angular_search_window_deg", &b.min_angular_search_window_deg);
+    c.ReadNonNegative("angular_search_window_deg_per_m", &b.angular_search_window_deg_per_m);
+    c.ReadInt("min_num_points", &b.min_num_points, 1);
     c.ReadNonNegative("max_see_through", &b.max_see_through);
     c.ReadNonNegative("see_through_slack_m", &b.see_through_slack_m);
     c.ReadNonNegative("loop_closure_translation_weight", &b.loop_closure_translation_weight);

@@ -102,6 +102,18 @@ void Validate(const ConstraintBuilderOptions& options) {
         "got " +
         std::to_string(options.search_window_per_travel));
   }
+  if (!(options.min_angular_search_window_deg >= 0.0 &&
+        options.angular_search_window_deg_per_m >= 0.0 &&
+        std::isfinite(options.min_angular_search_window_deg) &&
+        std::isfinite(options.angular_search_window_deg_per_m))) {
+    throw std::invalid_argument(
+        "constraint_builder options 'min_angular_search_window_deg' and "
+        "'angular_search_window_deg_per_m': expected finite values >= 0");
+  }
+  if (options.min_num_points < 1) {
+    throw std::invalid_argument("constraint_builder option 'min_num_points': expected >= 1, got " +
+                                std::to_string(options.min_num_points));
+  }
   RequirePositive("loop_closure_translation_weight", options.loop_closure_translation_weight);
   RequirePositive("loop_closure_rotation_weight", options.loop_closure_rotation_weight);
   Validate(options.fast_correlative_scan_matcher);
@@ -137,6 +149,14 @@ double ConstraintBuilder::SearchWindow(double travel_m) const {
                               options_.search_window_per_travel * std::max(travel_m, 0.0));
 }
 
+double ConstraintBuilder::AngularSearchWindow(double travel_m) const {
+  const double full_rad = options_.fast_correlative_scan_matcher.angular_search_window_rad;
+  if (options_.search_window_per_travel <= 0.0) return full_rad;
+  const double window_deg = options_.min_angular_search_window_deg +
+                            options_.angular_search_window_deg_per_m * std::max(travel_m, 0.0);
+  return std::min(full_rad, window_deg * M_PI / 180.0);
+}
+
 bool ConstraintBuilder::ShouldSearch(int submap_id, const geometry::Rigid2d& initial_relative_pose,
                                      const PointCloud& points) {
   const auto it = submaps_.find(submap_id);
@@ -144,6 +164,7 @@ bool ConstraintBuilder::ShouldSearch(int submap_id, const geometry::Rigid2d& ini
   if (initial_relative_pose.translation().norm() > options_.max_constraint_distance_m) {
     return false;
   }
+  if (static_cast<int>(points.size()) < options_.min_num_points) return false;
   if (options_.min_overlap > 0.0 &&
       ObservedFraction(*it->second.grid, initial_relative_pose, points) < options_.min_overlap) {
     ++num_without_overlap_;
@@ -161,8 +182,9 @@ std::optional<Constraint> ConstraintBuilder::Search(int submap_id, int node_id,
                                 " was not added as finished");
   }
   ++num_searches_;
-  const std::optional<ScanMatchResult> match = it->second.matcher->Match(
-      initial_relative_pose, points, options_.min_score, SearchWindow(travel_m));
+  const std::optional<ScanMatchResult> match =
+      it->second.matcher->Match(initial_relative_pose, points, options_.min_score,
+                                SearchWindow(travel_m), AngularSearchWindow(travel_m));
   if (!match) return std::nullopt;
   // Branch and bound is only cell- and step-accurate; refine on the grid
   // itself, anchored at the branch-and-bound answer.

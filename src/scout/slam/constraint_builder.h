@@ -53,6 +53,17 @@ struct ConstraintBuilderOptions {
   // alone can reject it. search_window_per_travel = 0: always the full window.
   double min_search_window_m = 1.0;
   double search_window_per_travel = 0.02;
+  // The angular window likewise: min_angular_search_window_deg +
+  // angular_search_window_deg_per_m * travel, at most
+  // fast_correlative_scan_matcher.angular_search_window_rad (same switch:
+  // search_window_per_travel = 0 searches the full windows). Closures 11-19
+  // degrees off slipped through a fixed 30 degree window in the office.
+  double min_angular_search_window_deg = 5.0;
+  double angular_search_window_deg_per_m = 0.1;
+  // Nodes with fewer points (after the loop-closure voxel filter) are not
+  // searched: 3 points match anywhere with a high score (seen in the office
+  // when the lidar faces open space beyond its range).
+  int min_num_points = 50;
   // Weights of accepted loop closures in the pose adjustment.
   double loop_closure_translation_weight = 1.1e4;
   double loop_closure_rotation_weight = 1e5;
@@ -117,6 +128,8 @@ class ConstraintBuilder {
                                    const PointCloud& points, double travel_m);
   // The translation window searched for a node 'travel_m' of trajectory away.
   double SearchWindow(double travel_m) const;
+  // The angular window (radians) searched for a node 'travel_m' away.
+  double AngularSearchWindow(double travel_m) const;
 
   // Pairs searched, loop closures found, pairs skipped for lack of overlap
   // and matches rejected by the free-space check, so far.

@@ -113,6 +113,9 @@ TEST(ConstraintBuilderTest, SearchesOnlyPairsWhoseScanOverlapsTheSubmap) {
   EXPECT_LT(ObservedFraction(*scene.grid, elsewhere, points), 0.05);
   EXPECT_FALSE(builder.ShouldSearch(0, elsewhere, points));
   EXPECT_EQ(builder.num_without_overlap(), 1);
+  // Three points fit somewhere in any submap: too few to search at all.
+  const PointCloud three(points.begin(), points.begin() + 3);
+  EXPECT_FALSE(builder.ShouldSearch(0, in_submap, three));
 }
 
 TEST(ConstraintBuilderTest, RaysThroughKnownWallsMeanTheWrongPlace) {
@@ -138,6 +141,14 @@ TEST(ConstraintBuilderTest, SearchWindowGrowsWithTheTrajectoryBetween) {
   EXPECT_DOUBLE_EQ(builder.SearchWindow(1000.0), 7.0);  // capped
   options.search_window_per_travel = 0.0;
   EXPECT_DOUBLE_EQ(ConstraintBuilder(options).SearchWindow(0.0), 7.0);  // always the full window
+  EXPECT_DOUBLE_EQ(ConstraintBuilder(options).AngularSearchWindow(0.0),
+                   options.fast_correlative_scan_matcher.angular_search_window_rad);
+  options.search_window_per_travel = 0.02;
+  options.min_angular_search_window_deg = 5.0;
+  options.angular_search_window_deg_per_m = 0.1;
+  EXPECT_NEAR(ConstraintBuilder(options).AngularSearchWindow(100.0), 15.0 * M_PI / 180.0, 1e-12);
+  EXPECT_NEAR(ConstraintBuilder(options).AngularSearchWindow(1000.0),
+              options.fast_correlative_scan_matcher.angular_search_window_rad, 1e-12);
 }
 
 TEST(ConstraintBuilderTest, FixedRatioSamplerIsDeterministic) {

@@ -200,9 +200,9 @@ std::optional<ScanMatchResult> FastCorrelativeScanMatcher::Match(
 
 std::optional<ScanMatchResult> FastCorrelativeScanMatcher::Match(
     const geometry::Rigid2d& initial_pose_estimate, const PointCloud& points, double min_score,
-    double linear_window_m) const {
-  return Search(initial_pose_estimate, points, linear_window_m, options_.angular_search_window_rad,
-                min_score, /*check_ambiguity=*/true);
+    double linear_window_m, double angular_window_rad) const {
+  return Search(initial_pose_estimate, points, linear_window_m, angular_window_rad, min_score,
+                /*check_ambiguity=*/true);
 }
 
 std::optional<ScanMatchResult> FastCorrelativeScanMatcher::MatchFullSubmap(const PointCloud& points,

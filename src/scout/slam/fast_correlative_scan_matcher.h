@@ -66,11 +66,10 @@ class FastCorrelativeScanMatcher {
   // or if the match is ambiguous (see FastCorrelativeScanMatcherOptions).
   std::optional<ScanMatchResult> Match(const geometry::Rigid2d& initial_pose_estimate,
                                        const PointCloud& points, double min_score) const;
-  // As Match with a translation window of 'linear_window_m' instead of the
-  // options' (the angular window stays).
+  // As Match with the windows given instead of the options'.
   std::optional<ScanMatchResult> Match(const geometry::Rigid2d& initial_pose_estimate,
                                        const PointCloud& points, double min_score,
-                                       double linear_window_m) const;
+                                       double linear_window_m, double angular_window_rad) const;
 
   // As Match, but searching every rotation and every translation that keeps
   // the grid's centre within the window centred on it (global localisation).

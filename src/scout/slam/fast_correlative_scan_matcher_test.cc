@@ -153,7 +153,7 @@ TEST(FastCorrelativeScanMatcherTest, RejectsAmbiguousMatchesWhenAskedTo) {
   EXPECT_FALSE(FastCorrelativeScanMatcher(grid, options).Match(truth, points, 0.55).has_value());
   // A window too small to reach the other room leaves nothing to confuse.
   const std::optional<ScanMatchResult> near =
-      FastCorrelativeScanMatcher(grid, options).Match(truth, points, 0.55, 1.0);
+      FastCorrelativeScanMatcher(grid, options).Match(truth, points, 0.55, 1.0, 0.5);
   ASSERT_TRUE(near.has_value());
   EXPECT_LT((near->pose.translation() - truth.translation()).norm(), 0.06) << near->pose;
 }

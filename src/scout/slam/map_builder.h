@@ -35,6 +35,7 @@ struct SlamStats {
   int num_submaps = 0;
   int num_optimizations = 0;
   int num_loop_closures = 0;
+  int num_rejected_loop_closures = 0;  // found, then dropped as outliers by a solve
   int num_loop_closure_searches = 0;
   double total_solve_time_s = 0.0;
   int num_scans = 0;  // scans given to AddScan

@@ -195,4 +195,22 @@ OptimizationResult OptimizationProblem::Solve(
   return result;
 }
 
+std::vector<size_t> LoopClosureOutliers(const OptimizationResult& result,
+                                        const std::vector<Constraint>& constraints,
+                                        double max_translation_m, double max_rotation_rad) {
+  std::vector<size_t> outliers;
+  for (size_t i = 0; i < constraints.size(); ++i) {
+    const Constraint& c = constraints[i];
+    if (c.kind != ConstraintKind::kInterSubmap) continue;
+    const geometry::Rigid2d solved = result.submap_global_poses.at(c.submap_id).inverse() *
+                                     result.node_global_poses.at(c.node_id);
+    const geometry::Rigid2d error = c.relative_pose.inverse() * solved;
+    if (error.translation().norm() > max_translation_m ||
+        std::abs(geometry::NormalizeAngle(error.theta())) > max_rotation_rad) {
+      outliers.push_back(i);
+    }
+  }
+  return outliers;
+}
+
 }  // namespace scout::slam

@@ -69,6 +69,14 @@ class OptimizationProblem {
   OptimizationProblemOptions options_;
 };
 
+// Returns the indices of the loop closures (kInterSubmap) in 'constraints'
+// that 'result' disagrees with: the solved pose of the node in the submap
+// frame differs from the measured one by more than 'max_translation_m' or
+// 'max_rotation_rad'. Such closures survived the Huber loss only damped.
+std::vector<size_t> LoopClosureOutliers(const OptimizationResult& result,
+                                        const std::vector<Constraint>& constraints,
+                                        double max_translation_m, double max_rotation_rad);
+
 }  // namespace scout::slam
 
 #endif  // SCOUT_SLAM_OPTIMIZATION_PROBLEM_H_

@@ -135,6 +135,31 @@ TEST(OptimizationProblemTest, HuberLossMakesOneWrongLoopClosureHarmless) {
   EXPECT_GT(MaxTranslationError(trusted.node_global_poses, clean.node_global_poses), 0.5);
 }
 
+// Aliasing rarely comes alone: consecutive nodes in a corridor repeat the
+// same wrong match. After the solve, their residuals give them away (and only
+// them), and solving without them recovers the clean map.
+TEST(OptimizationProblemTest, ResidualsFlagExactlyTheWrongClosures) {
+  SquareLoop loop = MakeSquareLoop();
+  const OptimizationProblem problem({});
+  const OptimizationResult clean = problem.Solve(loop.nodes, loop.submap_local, loop.constraints);
+  EXPECT_TRUE(LoopClosureOutliers(clean, loop.constraints, 0.3, 3.0 * M_PI / 180.0).empty());
+  const size_t first_wrong = loop.constraints.size();
+  for (int i = 11; i < 30; ++i) {
+    // Nodes of the second and third sides claimed 1.5 m further along.
+    loop.constraints.push_back(
+        {1, i, loop.truth[10].inverse() * loop.truth[i] * Rigid2d(1.5, 0.0, 0.0),
+         kLoopTranslationWeight, kLoopRotationWeight, ConstraintKind::kInterSubmap});
+  }
+  const OptimizationResult damped = problem.Solve(loop.nodes, loop.submap_local, loop.constraints);
+  const std::vector<size_t> outliers =
+      LoopClosureOutliers(damped, loop.constraints, 0.3, 3.0 * M_PI / 180.0);
+  EXPECT_EQ(outliers.size(), loop.constraints.size() - first_wrong);
+  for (size_t i : outliers) EXPECT_GE(i, first_wrong) << "a right closure was flagged";
+  std::vector<Constraint> kept(loop.constraints.begin(), loop.constraints.begin() + first_wrong);
+  const OptimizationResult again = problem.Solve(loop.nodes, loop.submap_local, kept);
+  EXPECT_LT(MaxTranslationError(again.node_global_poses, clean.node_global_poses), 1e-6);
+}
+
 TEST(OptimizationProblemTest, ResultDoesNotDependOnConstraintOrder) {
   SquareLoop loop = MakeSquareLoop();
   const OptimizationProblem problem({});

@@ -21,6 +21,17 @@ bool Contains(const std::vector<int>& ids, int id) {
   return std::find(ids.begin(), ids.end(), id) != ids.end();
 }
 
+bool SameConstraint(const Constraint& a, const Constraint& b) {
+  return a.submap_id == b.submap_id && a.node_id == b.node_id && a.kind == b.kind &&
+         a.relative_pose.translation() == b.relative_pose.translation() &&
+         a.relative_pose.theta() == b.relative_pose.theta();
+}
+
+bool Contains(const std::vector<Constraint>& list, const Constraint& c) {
+  return std::any_of(list.begin(), list.end(),
+                     [&](const Constraint& o) { return SameConstraint(o, c); });
+}
+
 }  // namespace
 
 void Validate(const PoseGraphOptions& options) {
@@ -33,6 +44,12 @@ void Validate(const PoseGraphOptions& options) {
                                 std::to_string(options.skip_neighbour_submaps));
   }
   RequirePositive("intra_submap_translation_weight", options.intra_submap_translation_weight);
+  RequirePositive("outlier_translation_m", options.outlier_translation_m);
+  RequirePositive("outlier_rotation_deg", options.outlier_rotation_deg);
+  if (options.max_outlier_rounds < 0) {
+    throw std::invalid_argument("pose_graph option 'max_outlier_rounds': expected >= 0, got " +
+                                std::to_string(options.max_outlier_rounds));
+  }
   RequirePositive("intra_submap_rotation_weight", options.intra_submap_rotation_weight);
   Validate(options.loop_closure_voxel_filter);
   Validate(options.constraint_builder);
@@ -212,7 +229,17 @@ void PoseGraph::Optimize(int num_nodes, int num_submaps) {
     }
   }
   // Solved without the lock: AddNode keeps running meanwhile.
-  const OptimizationResult result = optimization_problem_.Solve(nodes, submap_poses, constraints);
+  OptimizationResult result = optimization_problem_.Solve(nodes, submap_poses, constraints);
+  std::vector<Constraint> rejected;
+  for (int round = 0; round < options_.max_outlier_rounds; ++round) {
+    const std::vector<size_t> outliers =
+        LoopClosureOutliers(result, constraints, options_.outlier_translation_m,
+                            options_.outlier_rotation_deg * M_PI / 180.0);
+    if (outliers.empty()) break;
+    for (size_t i : outliers) rejected.push_back(constraints[i]);
+    std::erase_if(constraints, [&](const Constraint& c) { return Contains(rejected, c); });
+    result = optimization_problem_.Solve(nodes, submap_poses, constraints);
+  }
 
   std::vector<geometry::Rigid2d> all_submap_poses;
   {
@@ -231,6 +258,9 @@ void PoseGraph::Optimize(int num_nodes, int num_submaps) {
     for (size_t i = num_submaps; i < submaps_.size(); ++i) {
       submaps_[i].state.global_pose = local_to_global_ * submaps_[i].state.local_pose;
     }
+    std::erase_if(constraints_, [&](const Constraint& c) { return Contains(rejected, c); });
+    stats_.num_rejected_loop_closures += static_cast<int>(rejected.size());
+    stats_.num_loop_closures -= static_cast<int>(rejected.size());
     ++stats_.num_optimizations;
     stats_.last_solve_time_s = result.summary.solve_time_s;
     stats_.total_solve_time_s += result.summary.solve_time_s;
