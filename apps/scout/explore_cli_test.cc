@@ -115,6 +115,7 @@ TEST_F(ExploreCli, ExploresASmallMapAndWritesEveryOutput) {
               s["mapped_free_m2"].get<double>() / s["reachable_free_m2"].get<double>(), 1e-9);
   EXPECT_EQ(s["collisions"], 0);
   EXPECT_EQ(s["goals"]["unreachable"], 0);
+  EXPECT_EQ(s["unreachable_goals"].size(), 0u);  // one entry per unreachable goal
   EXPECT_GT(s["goals"]["issued"].get<int>(), 0);
   EXPECT_LT(s["ate_rmse_m"].get<double>(), 0.1);
   EXPECT_GT(s["sim_time_s"].get<double>(), s["wall_time_s"].get<double>());

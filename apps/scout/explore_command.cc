@@ -113,6 +113,16 @@ nlohmann::json Summary(const ExploreArgs& args, const exploration::ExplorationLo
                 {"retried", r.counters.goals_retried},
                 {"escapes", r.counters.escapes},
                 {"frontier_left", r.frontier_left}};
+  // Where each goal the true world made unreachable was, and the robot then
+  // (world frame), so they can be found on the map.
+  nlohmann::json unreachable = nlohmann::json::array();
+  for (const exploration::IssuedGoal& g : r.goals) {
+    if (g.reachable_in_truth) continue;
+    unreachable.push_back({{"sim_time_s", g.sim_time_s},
+                           {"goal", {g.goal_world.x(), g.goal_world.y()}},
+                           {"robot", {g.robot_world.x(), g.robot_world.y()}}});
+  }
+  s["unreachable_goals"] = unreachable;
   s["returned_home"] = r.returned_home;
   s["collisions"] = r.collisions;
   s["ate_rmse_m"] = ate_rmse_m;
