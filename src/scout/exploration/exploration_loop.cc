@@ -4,7 +4,6 @@
 #include <utility>
 
 #include "scout/frontier/stopwatch.h"
-#include "scout/grid/submap_fusion.h"
 
 namespace scout::exploration {
 namespace {
@@ -51,7 +50,8 @@ ExplorationLoop::ExplorationLoop(const sim::World& world, const ExplorationOptio
       goals_(options_.explore.goals, PlanningTraversability(options_), options_.explore.planner,
              options_.explore.follower,
              explore::MakeGoalPolicy(options_.explore.goal_policy, options_.explore.policy)),
-      world_from_map_(robot_.true_pose()) {
+      world_from_map_(robot_.true_pose()),
+      fusion_(options_.slam.local.submaps.resolution_m) {
   // Local SLAM's frame starts at the first scan's pose, which is the start.
   builder_ = std::make_unique<slam::MapBuilder>(options_.slam, [this](events::SubmapEvent event) {
     const frontier::Stopwatch watch;
@@ -118,13 +118,14 @@ bool ExplorationLoop::MaybeUpdateMap(bool force) {
   slam_changed_ = false;
   last_map_update_s_ = t;
   const std::vector<slam::SubmapState> submaps = builder_->GetSubmaps();
-  std::vector<grid::PlacedGrid> placed;
+  std::vector<grid::FusionInput> inputs;
   submap_poses_.clear();
   for (size_t i = 0; i < submaps.size(); ++i) {
-    placed.push_back({submaps[i].grid.get(), submaps[i].global_pose});
-    submap_poses_.push_back({static_cast<int>(i), submaps[i].global_pose});
+    const int id = static_cast<int>(i);
+    inputs.push_back({id, submaps[i].grid, submaps[i].global_pose, submaps[i].finished});
+    submap_poses_.push_back({id, submaps[i].global_pose});
   }
-  fused_map_ = grid::FuseSubmaps(placed, options_.slam.local.submaps.resolution_m);
+  fused_map_ = fusion_.Update(inputs);
   // Grid changes are deferred by the engine (FrontierOptions::
   // defer_grid_changes); apply them now that the frontier is needed.
   engine_.Flush();

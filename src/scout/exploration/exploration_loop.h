@@ -13,6 +13,7 @@
 #include "scout/exploration/ground_truth.h"
 #include "scout/explore/goal_manager.h"
 #include "scout/frontier/frontier_engine.h"
+#include "scout/grid/incremental_fusion.h"
 #include "scout/grid/occupancy_map.h"
 #include "scout/sim/simulated_robot.h"
 #include "scout/sim/world.h"
@@ -150,6 +151,8 @@ class ExplorationLoop {
 
   bool slam_changed_ = false;
   double last_map_update_s_ = -1e300;
+  // Adds again only the submaps that changed since the previous fusion.
+  grid::IncrementalSubmapFusion fusion_;
   grid::OccupancyMap fused_map_;
   std::vector<Eigen::Vector2d> frontier_;
   std::vector<explore::SubmapPose> submap_poses_;

@@ -1,8 +1,12 @@
 #include "scout/grid/submap_fusion.h"
 
 #include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
 
+#include <cmath>
 #include <numbers>
+
+#include "scout/geometry/box.h"
 
 namespace scout::grid {
 namespace {
@@ -42,8 +46,116 @@ TEST(FuseSubmaps, RotatedSubmapLandsWhereItsPoseSays) {
   EXPECT_EQ(fused.at(fused.limits.CellContaining({-0.15, 0.55})), CellState::kUnknown);
 }
 
+TEST(FuseSubmaps, ACentreOnASubmapCellEdgeTakesTheCellAboveIt) {
+  // Half a cell off the lattice in x and y, as a submap is in the world frame
+  // of a robot starting at (20.625, 4.575): every centre lies on cell edges.
+  ProbabilityGrid g(MapLimits(0.05, {0, 0}, 40, 3));
+  for (int y = 0; y < 3; ++y) {
+    for (int x = 0; x < 40; ++x) g.SetProbability({x, y}, (x * 7 + y * 3) % 5 < 2 ? 0.8f : 0.2f);
+  }
+  const OccupancyMap fused = FuseSubmaps({{&g, geometry::Rigid2d(20.625, 4.575, 0)}}, 0.05);
+  ASSERT_EQ(fused.limits.width(), 41);
+  ASSERT_EQ(fused.limits.height(), 4);
+  for (int y = 0; y < 4; ++y) {
+    for (int x = 0; x < 41; ++x) EXPECT_EQ(fused.at({x, y}), g.State({x, y})) << x << " " << y;
+  }
+}
+
 TEST(FuseSubmaps, NoSubmapsGiveAnEmptyMap) {
   EXPECT_EQ(FuseSubmaps({}, 0.05).limits.num_cells(), 0);
+}
+
+// The plain definition: every cell transforms its centre into every submap.
+// Cells whose centre lies on a submap cell edge (up to rounding) may go
+// either way, so they are marked in 'on_edge'.
+OccupancyMap DirectFusion(const std::vector<PlacedGrid>& submaps, double resolution_m,
+                          std::vector<bool>* on_edge) {
+  OccupancyMap fused = FuseSubmaps(submaps, resolution_m);  // for the limits only
+  std::vector<float> log_odds(fused.limits.num_cells(), 0.f);
+  std::vector<bool> known(fused.limits.num_cells(), false);
+  on_edge->assign(fused.limits.num_cells(), false);
+  for (const PlacedGrid& s : submaps) {
+    const MapLimits& limits = s.grid->limits();
+    for (int64_t flat = 0; flat < fused.limits.num_cells(); ++flat) {
+      const Eigen::Vector2d p =
+          s.global_pose.inverse() * fused.limits.CellCenter(fused.limits.CellOfFlatIndex(flat));
+      const Eigen::Vector2d q = (p - limits.origin()) / limits.resolution();
+      if (std::abs(q.x() - std::round(q.x())) < 1e-6 ||
+          std::abs(q.y() - std::round(q.y())) < 1e-6) {
+        (*on_edge)[flat] = true;
+      }
+      const uint16_t value = s.grid->value(limits.CellContaining(p));
+      if (value == kUnknownValue) continue;
+      const float probability = ValueToProbability(value);
+      log_odds[flat] += std::log(probability / (1.f - probability));
+      known[flat] = true;
+    }
+  }
+  for (int64_t flat = 0; flat < fused.limits.num_cells(); ++flat) {
+    fused.cells[flat] = !known[flat]         ? CellState::kUnknown
+                        : log_odds[flat] < 0 ? CellState::kFree
+                        : log_odds[flat] > 0 ? CellState::kOccupied
+                                             : CellState::kUnknown;
+  }
+  return fused;
+}
+
+ProbabilityGrid RandomGrid() {
+  const double resolution = *rc::gen::element(0.05, 0.1);
+  const int width = *rc::gen::inRange(1, 30);
+  const int height = *rc::gen::inRange(1, 30);
+  ProbabilityGrid g(MapLimits(
+      resolution, {*rc::gen::inRange(-40, 40) * 0.037, *rc::gen::inRange(-40, 40) * 0.029}, width,
+      height));
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      if (*rc::gen::inRange(0, 4) > 0) g.SetProbability({x, y}, *rc::gen::inRange(12, 89) / 100.f);
+    }
+  }
+  return g;
+}
+
+geometry::Rigid2d RandomPose() {
+  const double theta =
+      *rc::gen::oneOf(rc::gen::just(0.0), rc::gen::just(std::numbers::pi / 2),
+                      rc::gen::map(rc::gen::inRange(-314, 315), [](int a) { return a / 100.0; }));
+  return geometry::Rigid2d(*rc::gen::inRange(-300, 300) / 97.0, *rc::gen::inRange(-300, 300) / 89.0,
+                           theta);
+}
+
+// The fast row-wise evaluation (stepped coordinates, rows narrowed to the
+// rotated grid) changes no cell, but for centres on a submap cell edge.
+RC_GTEST_PROP(FuseSubmaps, EqualsTheCellByCellDefinition, ()) {
+  const double resolution = *rc::gen::element(0.05, 0.1);
+  std::vector<ProbabilityGrid> grids;
+  const int n = *rc::gen::inRange(1, 5);
+  for (int i = 0; i < n; ++i) grids.push_back(RandomGrid());
+  std::vector<PlacedGrid> placed;
+  for (const ProbabilityGrid& g : grids) placed.push_back({&g, RandomPose()});
+  const OccupancyMap fused = FuseSubmaps(placed, resolution);
+  std::vector<bool> on_edge;
+  const OccupancyMap direct = DirectFusion(placed, resolution, &on_edge);
+  for (size_t i = 0; i < fused.cells.size(); ++i) {
+    if (!on_edge[i]) RC_ASSERT(fused.cells[i] == direct.cells[i]);
+  }
+}
+
+// A far submap that moves the map's min corner leaves every other cell as it
+// was: the lattice does not depend on the bounds.
+RC_GTEST_PROP(FuseSubmaps, CellsDoNotDependOnTheMapBounds, ()) {
+  const ProbabilityGrid grid = RandomGrid();
+  const ProbabilityGrid far = RandomGrid();
+  const std::vector<PlacedGrid> alone = {{&grid, RandomPose()}};
+  const geometry::Rigid2d far_pose(*rc::gen::inRange(-900, -400) / 97.0,
+                                   *rc::gen::inRange(-900, -400) / 89.0, 0.3);
+  const OccupancyMap a = FuseSubmaps(alone, 0.05);
+  const OccupancyMap b = FuseSubmaps({alone[0], {&far, far_pose}}, 0.05);
+  const geometry::Box2d far_box = geometry::TransformBox(far_pose, far.limits().Bounds());
+  for (int64_t flat = 0; flat < a.limits.num_cells(); ++flat) {
+    const Eigen::Vector2d centre = a.limits.CellCenter(a.limits.CellOfFlatIndex(flat));
+    if (far_box.Inflated(0.1).Contains(centre)) continue;
+    RC_ASSERT(b.at(b.limits.CellContaining(centre)) == a.cells[flat]);
+  }
 }
 
 }  // namespace
