@@ -112,7 +112,8 @@ nlohmann::json Summary(const ExploreArgs& args, const exploration::ExplorationLo
                 {"dropped", r.counters.goals_dropped},
                 {"retried", r.counters.goals_retried},
                 {"escapes", r.counters.escapes},
-                {"frontier_left", r.frontier_left}};
+                {"frontier_left", r.frontier_left},
+                {"reachable_frontier_left", r.reachable_frontier_left}};
   // Where each goal the true world made unreachable was, and the robot then
   // (world frame), so they can be found on the map.
   nlohmann::json unreachable = nlohmann::json::array();
@@ -248,7 +249,8 @@ int RunExplore(const ExploreArgs& args) {
             << result.counters.goals_reached << " reached, " << result.counters.goals_failed
             << " failed, " << result.unreachable_goals << " unreachable in truth; collisions "
             << result.collisions << "; ATE RMSE " << std::setprecision(3) << ate_rmse_m << " m; "
-            << result.frontier_left << " frontier points left unreached\n"
+            << result.frontier_left << " frontier points left unreached ("
+            << result.reachable_frontier_left << " reachable)\n"
             << "outputs: " << (out.path() / "summary.json").string()
             << ", map.yaml, map.pgm, map.png, trajectory.tum, truth.tum, frontier.csv, "
                "coverage.csv\n";

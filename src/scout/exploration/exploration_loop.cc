@@ -168,10 +168,10 @@ std::optional<Termination> ExplorationLoop::CheckTermination(
   const double t = robot_.sim_time_s();
   if (status.state == explore::ExploreState::kFinished) {
     // The goal manager finishes when no navigation point is left to try
-    // (ALGORITHMS section 6): frontier points may remain that no plan on the
-    // fused map reaches, or that stayed after the robot drove to them. They
-    // are reported as frontier_left.
-    return Termination::kComplete;
+    // (ALGORITHMS section 6). Frontier points no plan on the fused map reaches
+    // may remain (reported as frontier_left); frontier a plan reaches means
+    // the policy gave up on it (e.g. its goals failed): not complete.
+    return status.reachable_frontier_left > 0 ? Termination::kNoProgress : Termination::kComplete;
   }
   if (t >= options_.explore.max_sim_time_s) return Termination::kMaxSimTime;
   if (t - last_gain_s_ >= options_.explore.no_progress_timeout_s) return Termination::kNoProgress;
@@ -231,6 +231,7 @@ ExplorationResult ExplorationLoop::Run(const ProgressCallback& progress,
       result_.terminated = *end;
       result_.returned_home = status.returned_home;
       result_.frontier_left = status.frontier_left;
+      result_.reachable_frontier_left = status.reachable_frontier_left;
       break;
     }
     const frontier::Stopwatch watch;

@@ -79,6 +79,7 @@ struct ExplorationResult {
   bool returned_home = false;
   // Frontier points left when the goal manager finished (0 when complete).
   int frontier_left = 0;
+  int reachable_frontier_left = 0;  // of frontier_left, reachable by a plan
   std::vector<CoverageSample> coverage_samples;
   std::vector<IssuedGoal> goals;
   // True poses at every scan time (world frame); estimated poses of the SLAM

@@ -253,6 +253,15 @@ void GoalManager::FinishOrGoHome(const ExploreInput& in, ExploreStatus& status) 
       return;
     }
   }
+  reachable_frontier_left_ = 0;
+  if (frontier_left_ > 0) {
+    const StartRegion start(*map_, in.robot_pose.translation());
+    const PathDistanceField field(*map_, start);
+    for (const Eigen::Vector2d& p : FrontierInBoundary(*in.frontier)) {
+      reachable_frontier_left_ += field.NearestReached(p, map_->options().goal_snap_radius_m)
+                                      .has_value();
+    }
+  }
   EndGoal(ExploreState::kFinished);
 }
 
@@ -380,6 +389,7 @@ ExploreStatus GoalManager::Update(const ExploreInput& in) {
   status.blacklisted = failed_.Blacklisted(in.submaps);
   status.candidates = candidates_;
   status.frontier_left = frontier_left_;
+  status.reachable_frontier_left = reachable_frontier_left_;
   status.returned_home = returned_home_;
   return status;
 }

@@ -107,6 +107,9 @@ struct ExploreStatus {
   // Frontier points (inside the boundary) left when no goal was: nonzero in
   // kFinished means exploration gave up on them rather than completed.
   int frontier_left = 0;
+  // Of those, the ones a plan from the robot reaches (within the goal snap
+  // radius) when it finished: more than zero means it gave up on them.
+  int reachable_frontier_left = 0;
   bool returned_home = false;
 };
 
@@ -207,6 +210,7 @@ class GoalManager {
   double last_progress_s_ = 0.0;
   std::optional<double> empty_since_s_;
   int frontier_left_ = 0;
+  int reachable_frontier_left_ = 0;
   std::vector<Eigen::Vector2d> candidates_;
   bool returned_home_ = false;
   ExploreCounters counters_;

@@ -252,6 +252,8 @@ TEST(GoalManagerTest, ANarrowedDoorDoesNotSealTheRoomBehindIt) {
   const ExploreStatus gave_up = sealed.Update(in);
   EXPECT_EQ(gave_up.state, ExploreState::kFinished);
   EXPECT_EQ(gave_up.frontier_left, static_cast<int>(door.frontier.size()));
+  // Behind a door too narrow for any plan: left, but not reachable.
+  EXPECT_EQ(gave_up.reachable_frontier_left, 0);
 }
 
 TEST(GoalManagerTest, GoalIsKeptWhenASlightlyBetterOneAppearsAndSwitchedForAClearlyBetterOne) {
