@@ -169,9 +169,14 @@ std::optional<Termination> ExplorationLoop::CheckTermination(
   if (status.state == explore::ExploreState::kFinished) {
     // The goal manager finishes when no navigation point is left to try
     // (ALGORITHMS section 6). Frontier points no plan on the fused map reaches
-    // may remain (reported as frontier_left); frontier a plan reaches means
-    // the policy gave up on it (e.g. its goals failed): not complete.
-    return status.reachable_frontier_left > 0 ? Termination::kNoProgress : Termination::kComplete;
+    // may remain (reported as frontier_left); more reachable frontier than
+    // complete_max_reachable_frontier_m means the policy gave up on it (e.g.
+    // its goals failed): not complete.
+    const double reachable_m =
+        status.reachable_frontier_left * options_.slam.local.submaps.resolution_m;
+    return reachable_m > options_.explore.complete_max_reachable_frontier_m
+               ? Termination::kNoProgress
+               : Termination::kComplete;
   }
   if (t >= options_.explore.max_sim_time_s) return Termination::kMaxSimTime;
   if (t - last_gain_s_ >= options_.explore.no_progress_timeout_s) return Termination::kNoProgress;

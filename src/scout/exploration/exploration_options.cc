@@ -48,6 +48,10 @@ void CheckExplorationOptions(const ExplorationOptions& options) {
   if (!(e.min_coverage_gain >= 0.0 && e.min_coverage_gain < 1.0)) {
     throw InputError("explore.min_coverage_gain: expected a value in [0, 1)");
   }
+  if (!(e.complete_max_reachable_frontier_m >= 0.0) ||
+      !std::isfinite(e.complete_max_reachable_frontier_m)) {
+    throw InputError("explore.complete_max_reachable_frontier_m: expected a finite value >= 0");
+  }
   if (!IsOneOf(e.strategy, frontier::StrategyNames())) {
     throw InputError("unknown frontier strategy '" + e.strategy + "': expected one of " +
                      JoinNames(frontier::StrategyNames()));

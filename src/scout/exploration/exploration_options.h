@@ -28,6 +28,11 @@ struct ExploreOptions {
   // for this long (a robot that cannot finish must still stop by itself).
   double no_progress_timeout_s = 300.0;
   double min_coverage_gain = 0.001;
+  // Finished counts as "complete" when at most this much frontier (metres:
+  // points times the cell size) that a plan reaches is left; more means the
+  // goal policy gave up on reachable frontier. 0.5 m is the smallest frontier
+  // explore_lite pursues (min_frontier_size).
+  double complete_max_reachable_frontier_m = 0.5;
   // The fused global map is rebuilt only when SLAM changed it, and at most
   // this often (fusing and re-inflating the whole map is the loop's dearest
   // step; the robot covers 0.5 m per second at most).

@@ -25,6 +25,8 @@ TEST_F(ExploreConfigTest, DefaultFileMatchesTheBuiltInDefaults) {
   EXPECT_DOUBLE_EQ(c.explore.map_update_interval_s, d.explore.map_update_interval_s);
   EXPECT_NEAR(c.explore.initial_turn_rad, d.explore.initial_turn_rad, 1e-12);
   EXPECT_EQ(c.explore.synchronous_slam, d.explore.synchronous_slam);
+  EXPECT_DOUBLE_EQ(c.explore.complete_max_reachable_frontier_m,
+                   d.explore.complete_max_reachable_frontier_m);
   EXPECT_EQ(c.explore.local_slam.use_online_correlative_scan_matching,
             d.explore.local_slam.use_online_correlative_scan_matching);
   EXPECT_DOUBLE_EQ(c.explore.local_slam.translation_weight,
