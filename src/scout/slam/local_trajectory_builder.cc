@@ -76,22 +76,21 @@ std::optional<InsertionResult> LocalTrajectoryBuilder::AddScan(const sensor::Las
     return std::nullopt;
   }
   const sensor::RangeData range_data = sensor::ToRangeData(scan, options_.range_filter);
-  // Misses alone would only erase: without a return there is nothing to match.
-  if (range_data.returns.empty()) {
+  const PointCloud returns = VoxelFilter(range_data.returns, options_.voxel_filter_size_m);
+  PointCloud filtered_points = AdaptiveVoxelFilter(returns, options_.adaptive_voxel_filter);
+  // Without a return to match, the pose is odometry's. That is good enough to
+  // insert the free space the scan saw (a robot starting in a hall wider
+  // than its lidar's range sees nothing else), but without odometry it would
+  // be a guess: such scans are dropped.
+  const bool has_odometry = extrapolator_.OdometryAt(scan.time_s).has_value();
+  if (filtered_points.empty() && (range_data.misses.empty() || !has_odometry)) {
     ++statistics_.num_empty_scans;
     return std::nullopt;
   }
   last_scan_time_s_ = scan.time_s;
-  const PointCloud returns = VoxelFilter(range_data.returns, options_.voxel_filter_size_m);
-  PointCloud filtered_points = AdaptiveVoxelFilter(returns, options_.adaptive_voxel_filter);
-  if (filtered_points.empty()) {
-    // Every return lies beyond the adaptive filter's range: matching is blind.
-    ++statistics_.num_empty_scans;
-    return std::nullopt;
-  }
 
   geometry::Rigid2d pose = extrapolator_.ExtrapolatePose(scan.time_s);
-  if (!active_submaps_.submaps().empty()) {
+  if (!active_submaps_.submaps().empty() && !filtered_points.empty()) {
     const auto start = std::chrono::steady_clock::now();
     pose = MatchScan(pose, filtered_points);
     statistics_.scan_matching_ms +=

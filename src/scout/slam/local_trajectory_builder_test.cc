@@ -178,6 +178,29 @@ TEST(LocalTrajectoryBuilderTest, ResultCarriesSubmapsAndSkipsUnusableScans) {
   EXPECT_EQ(builder.statistics().num_empty_scans, 2);
 }
 
+// A robot starting in a hall wider than its lidar's range gets no return at
+// all. With odometry, the free space it saw is still inserted at the
+// odometry pose, so exploration has a frontier to go to; without odometry the
+// pose would be a guess and the scan is dropped.
+TEST(LocalTrajectoryBuilderTest, ScanWithoutReturnsInsertsFreeSpaceAtTheOdometryPose) {
+  sensor::LaserScan open = testing::CastScan({}, Rigid2d(), 0.5);
+  for (float range : open.ranges) ASSERT_TRUE(std::isinf(range));
+  LocalTrajectoryBuilder blind({});
+  EXPECT_FALSE(blind.AddScan(open).has_value());
+  EXPECT_EQ(blind.statistics().num_empty_scans, 1);
+
+  LocalTrajectoryBuilder builder({});
+  builder.AddOdometry({0.0, Rigid2d()});
+  builder.AddOdometry({0.5, Rigid2d(0.4, 0.1, 0.2)});
+  const std::optional<InsertionResult> result = builder.AddScan(open);
+  ASSERT_TRUE(result.has_value());
+  EXPECT_TRUE(result->filtered_points.empty());
+  EXPECT_EQ(result->created_submaps, std::vector<events::SubmapId>{0});
+  // The extrapolator's frame starts at the first pose it is given.
+  EXPECT_EQ(builder.statistics().num_matched, 0);
+  EXPECT_EQ(builder.statistics().num_empty_scans, 0);
+}
+
 TEST(LocalTrajectoryBuilderTest, RejectsInvalidOptionsNamingThem) {
   LocalSlamOptions options;
   options.voxel_filter_size_m = 0.0;
