@@ -107,9 +107,14 @@ write_document() {
     fi
     echo "## (b) Closed-loop exploration"
     echo
-    echo "\`scout explore\` is still being fixed (it does not yet reach full coverage on the"
-    echo "generated office); these are the numbers it produces today. *path to 99 %* is the path"
-    echo "length when coverage of the reachable free area first reached 99 % (— = never)."
+    echo "Each run: the simulated robot (180° lidar, drifting odometry) explores with Scout's SLAM"
+    echo "in the loop, strategy \`exact\`, one goal policy. *coverage* is the reachable free area"
+    echo "mapped correctly; *path to 99 %* is the path length when coverage first reached 99 %"
+    echo "(— = never); *unreachable* counts goals the true world makes unreachable for the robot"
+    echo "disc (each is listed with its position in the run's \`summary.json\`); *ATE* is the"
+    echo "estimated trajectory against the simulator's. A run ends \`complete\` when no navigation"
+    echo "point is left and at most 0.5 m of frontier a plan reaches remains, \`no_progress\` when"
+    echo "the policy gave up on reachable frontier or coverage stalled for 300 s."
     echo
     tables explore "${EXPLORE[@]}"
     compare_figures explore "${EXPLORE[@]}"
