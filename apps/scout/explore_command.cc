@@ -112,6 +112,7 @@ nlohmann::json Summary(const ExploreArgs& args, const exploration::ExplorationLo
                 {"dropped", r.counters.goals_dropped},
                 {"retried", r.counters.goals_retried},
                 {"escapes", r.counters.escapes},
+                {"recoveries", r.counters.recoveries},
                 {"frontier_left", r.frontier_left},
                 {"reachable_frontier_left", r.reachable_frontier_left}};
   // Where each goal the true world made unreachable was, and the robot then

@@ -18,6 +18,11 @@ void Validate(const GoalManagerOptions& o) {
   CheckAtLeast(g, "max_plan_attempts", o.max_plan_attempts, 1.0);
   CheckAtLeast(g, "finish_after_empty_s", o.finish_after_empty_s, 0.0);
   CheckAtLeast(g, "finish_with_frontier_after_s", o.finish_with_frontier_after_s, 0.0);
+  CheckAtLeast(g, "stuck_timeout_s", o.stuck_timeout_s, 0.0);
+  CheckAtLeast(g, "stuck_min_motion_m", o.stuck_min_motion_m, 0.0);
+  CheckAtLeast(g, "back_up_distance_m", o.back_up_distance_m, 0.0);
+  CheckAtLeast(g, "back_up_speed_mps", o.back_up_speed_mps, 0.0);
+  CheckAtLeast(g, "back_up_timeout_s", o.back_up_timeout_s, 0.0);
   CheckAtLeast(g, "goal_frontier_radius_m", o.goal_frontier_radius_m, 0.0);
   CheckAtLeast(g, "goal_switch_margin", o.goal_switch_margin, 0.0);
   CheckAtLeast(g, "goal_match_radius_m", o.goal_match_radius_m, 0.0);
@@ -212,6 +217,8 @@ void GoalManager::BeginDriving(const Eigen::Vector2d& goal, const PlannedPath& p
 }
 
 void GoalManager::EndGoal(ExploreState next) {
+  moving_since_.reset();
+  backing_up_since_.reset();
   goal_.reset();
   follower_.Clear();
   state_ = next;
@@ -258,8 +265,8 @@ void GoalManager::FinishOrGoHome(const ExploreInput& in, ExploreStatus& status) 
     const StartRegion start(*map_, in.robot_pose.translation());
     const PathDistanceField field(*map_, start);
     for (const Eigen::Vector2d& p : FrontierInBoundary(*in.frontier)) {
-      reachable_frontier_left_ += field.NearestReached(p, map_->options().goal_snap_radius_m)
-                                      .has_value();
+      reachable_frontier_left_ +=
+          field.NearestReached(p, map_->options().goal_snap_radius_m).has_value();
     }
   }
   EndGoal(ExploreState::kFinished);
@@ -328,6 +335,25 @@ void GoalManager::Replan(const ExploreInput& in) {
 }
 
 void GoalManager::Drive(const ExploreInput& in, ExploreStatus& status) {
+  const Eigen::Vector2d here = in.robot_pose.translation();
+  if (backing_up_since_) {
+    const auto [since_s, from] = *backing_up_since_;
+    if ((here - from).norm() >= options_.back_up_distance_m ||
+        in.time_s - since_s >= options_.back_up_timeout_s) {
+      backing_up_since_.reset();
+      moving_since_.reset();
+      if (state_ == ExploreState::kReturning) {
+        EndGoal(ExploreState::kFinished);
+      } else {
+        ++counters_.goals_failed;
+        failed_.RecordFailure(Resolve(*goal_, in.submaps), in.submaps, *map_);
+        EndGoal(ExploreState::kFailed);
+      }
+      return;
+    }
+    status.command.linear_mps = -options_.back_up_speed_mps;
+    return;
+  }
   if (map_dirty_ && in.time_s - last_replan_s_ >= options_.replan_interval_s) {
     Replan(in);
     if (state_ != ExploreState::kDriving && state_ != ExploreState::kReturning) return;
@@ -360,6 +386,19 @@ void GoalManager::Drive(const ExploreInput& in, ExploreStatus& status) {
     return;
   }
   status.command = fs.command;
+  // Commanded forward without moving: stuck against something.
+  if (status.command.linear_mps <= 0.0) {
+    moving_since_.reset();
+  } else if (!moving_since_ ||
+             (here - moving_since_->second).norm() >= options_.stuck_min_motion_m) {
+    moving_since_ = {in.time_s, here};
+  } else if (options_.stuck_timeout_s > 0.0 &&
+             in.time_s - moving_since_->first >= options_.stuck_timeout_s) {
+    ++counters_.recoveries;
+    backing_up_since_ = {in.time_s, here};
+    status.command = {};
+    status.command.linear_mps = -options_.back_up_speed_mps;
+  }
 }
 
 ExploreStatus GoalManager::Update(const ExploreInput& in) {

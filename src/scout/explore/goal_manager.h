@@ -48,6 +48,18 @@ struct GoalManagerOptions {
   // With frontier points left but none reachable, the robot turns on the spot
   // (refreshing the map around it) for this long before it gives up.
   double finish_with_frontier_after_s = 10.0;
+  // Recovery: when the robot is commanded forward but has not moved
+  // stuck_min_motion_m for stuck_timeout_s (pressed against an obstacle the
+  // map places elsewhere; a blocked arc stops turning too), it backs up
+  // back_up_distance_m at back_up_speed_mps (at most back_up_timeout_s) and
+  // the goal counts as failed. In willow-garage the robot otherwise stayed
+  // pressed against a door post for the last 250 s of its run. A
+  // stuck_timeout_s of 0 turns the recovery off.
+  double stuck_timeout_s = 3.0;
+  double stuck_min_motion_m = 0.05;
+  double back_up_distance_m = 0.3;
+  double back_up_speed_mps = 0.15;
+  double back_up_timeout_s = 4.0;
   // After exploring, drive back to where Start() was called.
   bool return_to_start = false;
   // Optional exploration area: a simple polygon in the global frame (at least
@@ -93,7 +105,8 @@ struct ExploreCounters {
   int goals_dropped = 0;      // the map put it inside the inflated band
   int goals_retried = 0;      // lifted from the blacklist after a map change
   int selections = 0;
-  int escapes = 0;  // searches that started by leaving the band or a pocket
+  int escapes = 0;     // searches that started by leaving the band or a pocket
+  int recoveries = 0;  // back-ups after the robot got stuck
 };
 
 struct ExploreStatus {
@@ -208,6 +221,10 @@ class GoalManager {
   double best_remaining_m_ = 0.0;
   double goal_frontier_reach_m_ = 0.0;
   double last_progress_s_ = 0.0;
+  // Stuck detection: where and when the robot last moved while commanded
+  // forward; and the back-up in progress, if any.
+  std::optional<std::pair<double, Eigen::Vector2d>> moving_since_;
+  std::optional<std::pair<double, Eigen::Vector2d>> backing_up_since_;
   std::optional<double> empty_since_s_;
   int frontier_left_ = 0;
   int reachable_frontier_left_ = 0;

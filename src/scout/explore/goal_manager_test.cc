@@ -28,7 +28,16 @@ struct Room {
   }
 };
 
-GoalManager MakeManager(const GoalManagerOptions& o = {}, std::string_view policy = "scout") {
+// The robots of these tests often stand still on purpose (a goal that makes
+// no progress): the stuck recovery is off unless a test turns it on.
+GoalManagerOptions NoStuckRecovery() {
+  GoalManagerOptions o;
+  o.stuck_timeout_s = 0.0;
+  return o;
+}
+
+GoalManager MakeManager(const GoalManagerOptions& o = NoStuckRecovery(),
+                        std::string_view policy = "scout") {
   return GoalManager(o, {}, {}, {}, MakeGoalPolicy(policy, {}));
 }
 
@@ -71,6 +80,37 @@ TEST(GoalManagerTest, ProgressTimeoutMarksTheGoalFailedAndPicksAnother) {
   ASSERT_TRUE(next.goal.has_value());
   EXPECT_GT((*next.goal - *first.goal).norm(), 0.5);  // outside the blacklist radius
   EXPECT_EQ(gm.counters().goals_issued, 2);
+}
+
+TEST(GoalManagerTest, StuckRobotBacksUpThenTheGoalFails) {
+  Room room;
+  GoalManagerOptions o;  // recovery on, defaults: 3 s, 0.3 m back at 0.15 m/s
+  GoalManager gm = MakeManager(o);
+  gm.Start();
+  Eigen::Vector2d robot = room.b.At(10, 20);
+  const ExploreStatus first = gm.Update(room.Input(0, robot, true));
+  ASSERT_EQ(first.state, ExploreState::kDriving);
+  ASSERT_GT(first.command.linear_mps, 0.0);
+  // Pressed against something: commanded forward, not moving.
+  ExploreStatus s;
+  for (double t = 0.5; t < o.stuck_timeout_s; t += 0.5) {
+    s = gm.Update(room.Input(t, robot, false));
+    ASSERT_GT(s.command.linear_mps, 0.0) << t;
+  }
+  s = gm.Update(room.Input(o.stuck_timeout_s, robot, false));
+  EXPECT_LT(s.command.linear_mps, 0.0);
+  EXPECT_EQ(gm.counters().recoveries, 1);
+  // Backing up until 0.3 m away; then the goal has failed.
+  robot.x() -= 0.2;
+  s = gm.Update(room.Input(o.stuck_timeout_s + 1.5, robot, false));
+  EXPECT_EQ(s.state, ExploreState::kDriving);
+  EXPECT_LT(s.command.linear_mps, 0.0);
+  robot.x() -= 0.15;
+  s = gm.Update(room.Input(o.stuck_timeout_s + 2.5, robot, false));
+  EXPECT_EQ(s.state, ExploreState::kFailed);
+  EXPECT_EQ(gm.counters().goals_failed, 1);
+  ASSERT_EQ(s.blacklisted.size(), 1u);
+  EXPECT_EQ(s.blacklisted[0], *first.goal);
 }
 
 TEST(GoalManagerTest, FailedGoalMovesWithItsSubmapAndIsRetriedAfterTheMapChanges) {

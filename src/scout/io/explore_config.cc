@@ -17,6 +17,11 @@ void ReadGoals(YamlSection s, explore::GoalManagerOptions* o) {
   s.ReadInt("max_plan_attempts", &o->max_plan_attempts, 1);
   s.ReadNonNegative("finish_after_empty_s", &o->finish_after_empty_s);
   s.ReadNonNegative("finish_with_frontier_after_s", &o->finish_with_frontier_after_s);
+  s.ReadNonNegative("stuck_timeout_s", &o->stuck_timeout_s);
+  s.ReadNonNegative("stuck_min_motion_m", &o->stuck_min_motion_m);
+  s.ReadNonNegative("back_up_distance_m", &o->back_up_distance_m);
+  s.ReadNonNegative("back_up_speed_mps", &o->back_up_speed_mps);
+  s.ReadNonNegative("back_up_timeout_s", &o->back_up_timeout_s);
   s.ReadNonNegative("goal_frontier_radius_m", &o->goal_frontier_radius_m);
   s.ReadNonNegative("goal_switch_margin", &o->goal_switch_margin);
   s.ReadNonNegative("goal_match_radius_m", &o->goal_match_radius_m);

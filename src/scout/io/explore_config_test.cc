@@ -25,6 +25,8 @@ TEST_F(ExploreConfigTest, DefaultFileMatchesTheBuiltInDefaults) {
   EXPECT_DOUBLE_EQ(c.explore.map_update_interval_s, d.explore.map_update_interval_s);
   EXPECT_NEAR(c.explore.initial_turn_rad, d.explore.initial_turn_rad, 1e-12);
   EXPECT_EQ(c.explore.synchronous_slam, d.explore.synchronous_slam);
+  EXPECT_DOUBLE_EQ(c.explore.goals.stuck_timeout_s, d.explore.goals.stuck_timeout_s);
+  EXPECT_DOUBLE_EQ(c.explore.goals.back_up_distance_m, d.explore.goals.back_up_distance_m);
   EXPECT_DOUBLE_EQ(c.explore.complete_max_reachable_frontier_m,
                    d.explore.complete_max_reachable_frontier_m);
   EXPECT_EQ(c.explore.local_slam.use_online_correlative_scan_matching,
