@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "scout/grid/fusion_test_poses.h"
 #include "scout/grid/submap_fusion.h"
 
 namespace scout::grid {
@@ -102,15 +103,6 @@ GridPtr RandomGrid() {
   return g;
 }
 
-geometry::Rigid2d RandomPose() {
-  // Axis-aligned angles as well: SLAM's first submap sits at the identity.
-  const double theta =
-      *rc::gen::oneOf(rc::gen::just(0.0), rc::gen::just(std::numbers::pi / 2),
-                      rc::gen::map(rc::gen::inRange(-314, 315), [](int a) { return a / 100.0; }));
-  return geometry::Rigid2d(*rc::gen::inRange(-300, 300) / 97.0, *rc::gen::inRange(-300, 300) / 89.0,
-                           theta);
-}
-
 // What the exploration loop does between fusions, in any order: new submaps,
 // new snapshots of active ones, finishing, and optimisations moving all.
 RC_GTEST_PROP(IncrementalSubmapFusion, EveryUpdateEqualsFuseSubmaps, ()) {
@@ -125,7 +117,8 @@ RC_GTEST_PROP(IncrementalSubmapFusion, EveryUpdateEqualsFuseSubmaps, ()) {
     }
     switch (*rc::gen::inRange(0, 5)) {
       case 0:
-        submaps.push_back({static_cast<int>(submaps.size()), RandomGrid(), RandomPose(), false});
+        submaps.push_back(
+            {static_cast<int>(submaps.size()), RandomGrid(), testing::RandomSubmapPose(), false});
         break;
       case 1:
         if (!active.empty()) submaps[*rc::gen::elementOf(active)].grid = RandomGrid();

@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "scout/geometry/box.h"
+#include "scout/grid/fusion_test_poses.h"
 
 namespace scout::grid {
 namespace {
@@ -115,14 +116,6 @@ ProbabilityGrid RandomGrid() {
   return g;
 }
 
-geometry::Rigid2d RandomPose() {
-  const double theta =
-      *rc::gen::oneOf(rc::gen::just(0.0), rc::gen::just(std::numbers::pi / 2),
-                      rc::gen::map(rc::gen::inRange(-314, 315), [](int a) { return a / 100.0; }));
-  return geometry::Rigid2d(*rc::gen::inRange(-300, 300) / 97.0, *rc::gen::inRange(-300, 300) / 89.0,
-                           theta);
-}
-
 // The fast row-wise evaluation (stepped coordinates, rows narrowed to the
 // rotated grid) changes no cell, but for centres on a submap cell edge.
 RC_GTEST_PROP(FuseSubmaps, EqualsTheCellByCellDefinition, ()) {
@@ -131,7 +124,7 @@ RC_GTEST_PROP(FuseSubmaps, EqualsTheCellByCellDefinition, ()) {
   const int n = *rc::gen::inRange(1, 5);
   for (int i = 0; i < n; ++i) grids.push_back(RandomGrid());
   std::vector<PlacedGrid> placed;
-  for (const ProbabilityGrid& g : grids) placed.push_back({&g, RandomPose()});
+  for (const ProbabilityGrid& g : grids) placed.push_back({&g, testing::RandomSubmapPose()});
   const OccupancyMap fused = FuseSubmaps(placed, resolution);
   std::vector<bool> on_edge;
   const OccupancyMap direct = DirectFusion(placed, resolution, &on_edge);
@@ -145,7 +138,7 @@ RC_GTEST_PROP(FuseSubmaps, EqualsTheCellByCellDefinition, ()) {
 RC_GTEST_PROP(FuseSubmaps, CellsDoNotDependOnTheMapBounds, ()) {
   const ProbabilityGrid grid = RandomGrid();
   const ProbabilityGrid far = RandomGrid();
-  const std::vector<PlacedGrid> alone = {{&grid, RandomPose()}};
+  const std::vector<PlacedGrid> alone = {{&grid, testing::RandomSubmapPose()}};
   const geometry::Rigid2d far_pose(*rc::gen::inRange(-900, -400) / 97.0,
                                    *rc::gen::inRange(-900, -400) / 89.0, 0.3);
   const OccupancyMap a = FuseSubmaps(alone, 0.05);
