@@ -334,6 +334,17 @@ void GoalManager::Replan(const ExploreInput& in) {
   EndGoal(ExploreState::kPlanning);
 }
 
+void GoalManager::FailGoal(const ExploreInput& in) {
+  // Failing the way home ends exploration; a failed goal is remembered.
+  if (state_ == ExploreState::kReturning) {
+    EndGoal(ExploreState::kFinished);
+    return;
+  }
+  ++counters_.goals_failed;
+  failed_.RecordFailure(Resolve(*goal_, in.submaps), in.submaps, *map_);
+  EndGoal(ExploreState::kFailed);
+}
+
 void GoalManager::Drive(const ExploreInput& in, ExploreStatus& status) {
   const Eigen::Vector2d here = in.robot_pose.translation();
   if (backing_up_since_) {
@@ -342,13 +353,7 @@ void GoalManager::Drive(const ExploreInput& in, ExploreStatus& status) {
         in.time_s - since_s >= options_.back_up_timeout_s) {
       backing_up_since_.reset();
       moving_since_.reset();
-      if (state_ == ExploreState::kReturning) {
-        EndGoal(ExploreState::kFinished);
-      } else {
-        ++counters_.goals_failed;
-        failed_.RecordFailure(Resolve(*goal_, in.submaps), in.submaps, *map_);
-        EndGoal(ExploreState::kFailed);
-      }
+      FailGoal(in);
       return;
     }
     status.command.linear_mps = -options_.back_up_speed_mps;
@@ -376,13 +381,7 @@ void GoalManager::Drive(const ExploreInput& in, ExploreStatus& status) {
     last_progress_s_ = in.time_s;
   }
   if (in.time_s - last_progress_s_ > options_.progress_timeout_s) {
-    if (returning) {
-      EndGoal(ExploreState::kFinished);
-    } else {
-      ++counters_.goals_failed;
-      failed_.RecordFailure(Resolve(*goal_, in.submaps), in.submaps, *map_);
-      EndGoal(ExploreState::kFailed);
-    }
+    FailGoal(in);
     return;
   }
   status.command = fs.command;

@@ -194,6 +194,8 @@ class GoalManager {
   void Replan(const ExploreInput& input);
   void ReplanHome(const ExploreInput& input);
   // DRIVING/RETURNING: follow, watch progress.
+  // Ends the current goal as failed (or the way home as finished).
+  void FailGoal(const ExploreInput& in);
   void Drive(const ExploreInput& input, ExploreStatus& status);
   // Returns the distance from 'goal' to the nearest frontier point.
   static double DistanceToFrontier(const Eigen::Vector2d& goal,

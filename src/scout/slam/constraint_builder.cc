@@ -23,6 +23,13 @@ void RequirePositive(const char* key, double value) {
 // 0.5 of a cell seen equally often hit and passed.
 constexpr float kWallProbability = 0.6f;
 
+void RequireFraction(const char* key, double value) {
+  if (!(value >= 0.0 && value <= 1.0)) {
+    throw std::invalid_argument(std::string("constraint_builder option '") + key +
+                                "': expected a value in [0, 1], got " + std::to_string(value));
+  }
+}
+
 }  // namespace
 
 double ObservedFraction(const grid::ProbabilityGrid& grid, const geometry::Rigid2d& pose,
@@ -70,21 +77,9 @@ void Validate(const ConstraintBuilderOptions& options) {
         std::to_string(options.sampling_ratio));
   }
   RequirePositive("max_constraint_distance_m", options.max_constraint_distance_m);
-  if (!(options.min_score >= 0.0 && options.min_score <= 1.0)) {
-    throw std::invalid_argument(
-        "constraint_builder option 'min_score': expected a value in [0, 1], got " +
-        std::to_string(options.min_score));
-  }
-  if (!(options.min_overlap >= 0.0 && options.min_overlap <= 1.0)) {
-    throw std::invalid_argument(
-        "constraint_builder option 'min_overlap': expected a value in [0, 1], got " +
-        std::to_string(options.min_overlap));
-  }
-  if (!(options.max_see_through >= 0.0 && options.max_see_through <= 1.0)) {
-    throw std::invalid_argument(
-        "constraint_builder option 'max_see_through': expected a value in [0, 1], got " +
-        std::to_string(options.max_see_through));
-  }
+  RequireFraction("min_score", options.min_score);
+  RequireFraction("min_overlap", options.min_overlap);
+  RequireFraction("max_see_through", options.max_see_through);
   if (!(options.see_through_slack_m >= 0.0 && std::isfinite(options.see_through_slack_m))) {
     throw std::invalid_argument(
         "constraint_builder option 'see_through_slack_m': expected a finite value >= 0, got " +
