@@ -83,7 +83,7 @@ TEST_F(ExploreCli, BadInputsNameWhatIsWrongAndLeaveNoOutputs) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find("--max-sim-time"), std::string::npos) << r.output;
   scout::WriteTextFileAtomically(dir_ / "contradictory.yaml",
-                                 "frontier:\n  inflation_radius_m: 0.3\n");
+                                 "explore:\n  frontier_inflation_radius_m: 0.25\n");
   r = RunScout("explore --config " + (dir_ / "contradictory.yaml").string() + rooms + o);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find("contradictory"), std::string::npos) << r.output;
@@ -114,6 +114,8 @@ TEST_F(ExploreCli, ExploresASmallMapAndWritesEveryOutput) {
   EXPECT_NEAR(s["coverage"].get<double>(),
               s["mapped_free_m2"].get<double>() / s["reachable_free_m2"].get<double>(), 1e-9);
   EXPECT_EQ(s["collisions"], 0);
+  EXPECT_TRUE(s["collision_places"].is_array());
+  EXPECT_EQ(s["collision_places"].size(), 0u);  // one entry per collision
   EXPECT_EQ(s["goals"]["unreachable"], 0);
   EXPECT_EQ(s["unreachable_goals"].size(), 0u);  // one entry per unreachable goal
   EXPECT_GT(s["goals"]["issued"].get<int>(), 0);

@@ -106,6 +106,7 @@ nlohmann::json Summary(const ExploreArgs& args, const exploration::ExplorationLo
                 {"reached", r.counters.goals_reached},
                 {"failed", r.counters.goals_failed},
                 {"unreachable", r.unreachable_goals},
+                {"unreachable_points", r.unreachable_points},
                 {"no_plan", r.counters.goals_unreachable},
                 {"superseded", r.counters.goals_superseded},
                 {"seen_before_arrival", r.counters.goals_seen},
@@ -122,11 +123,18 @@ nlohmann::json Summary(const ExploreArgs& args, const exploration::ExplorationLo
     if (g.reachable_in_truth) continue;
     unreachable.push_back({{"sim_time_s", g.sim_time_s},
                            {"goal", {g.goal_world.x(), g.goal_world.y()}},
+                           {"target", {g.target_world.x(), g.target_world.y()}},
                            {"robot", {g.robot_world.x(), g.robot_world.y()}}});
   }
   s["unreachable_goals"] = unreachable;
   s["returned_home"] = r.returned_home;
   s["collisions"] = r.collisions;
+  nlohmann::json collisions = nlohmann::json::array();
+  for (const exploration::ExplorationResult::Collision& c : r.collision_places) {
+    collisions.push_back(
+        {{"sim_time_s", c.sim_time_s}, {"robot", {c.robot_world.x(), c.robot_world.y()}}});
+  }
+  s["collision_places"] = collisions;
   s["ate_rmse_m"] = ate_rmse_m;
   const slam::SlamStats stats = loop.map_builder().GetStats();
   s["slam"] = {{"nodes", stats.num_nodes},

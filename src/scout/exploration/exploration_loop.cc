@@ -13,6 +13,7 @@ ExplorationOptions Prepared(const ExplorationOptions& options) {
   CheckExplorationOptions(options);
   ExplorationOptions o = options;
   o.slam = EffectiveSlamOptions(options);
+  o.frontier = EffectiveFrontierOptions(options);
   return o;
 }
 
@@ -151,15 +152,19 @@ void ExplorationLoop::MeasureCoverage() {
   }
 }
 
-void ExplorationLoop::RecordIssuedGoal(const Eigen::Vector2d& goal_map) {
+void ExplorationLoop::RecordIssuedGoal(const Eigen::Vector2d& goal_map,
+                                       const Eigen::Vector2d& target_map) {
   IssuedGoal g;
   g.sim_time_s = robot_.sim_time_s();
   g.goal_world = world_from_map_ * goal_map;
+  g.target_world = world_from_map_ * target_map;
   g.robot_world = robot_.true_pose().translation();
   // Reached means within the follower's tolerance, so that is the slack.
-  g.reachable_in_truth =
-      truth_.DiscCanReach(g.robot_world, g.goal_world, options_.explore.follower.goal_tolerance_m);
+  const double tolerance_m = options_.explore.follower.goal_tolerance_m;
+  g.reachable_in_truth = truth_.DiscCanReach(g.robot_world, g.target_world, tolerance_m);
+  g.point_reachable_in_truth = truth_.DiscCanReach(g.robot_world, g.goal_world, tolerance_m);
   result_.unreachable_goals += !g.reachable_in_truth;
+  result_.unreachable_points += !g.point_reachable_in_truth;
   result_.goals.push_back(g);
 }
 
@@ -220,8 +225,8 @@ ExplorationResult ExplorationLoop::Run(const ProgressCallback& progress,
       const frontier::Stopwatch watch;
       status = goals_.Update(in);
       result_.timings.goals_s += watch.ElapsedUs() * 1e-6;
-      if (goals_.counters().goals_issued > issued_before && status.goal) {
-        RecordIssuedGoal(*status.goal);
+      if (goals_.counters().goals_issued > issued_before && status.goal && status.target) {
+        RecordIssuedGoal(*status.goal, *status.target);
       }
     }
     if (t >= next_sample_s) {
@@ -240,8 +245,12 @@ ExplorationResult ExplorationLoop::Run(const ProgressCallback& progress,
       break;
     }
     const frontier::Stopwatch watch;
+    const int collisions_before = robot_.collisions();
     robot_.Step(status.command.linear_mps, status.command.angular_radps, e.dt_s);
     result_.timings.simulation_s += watch.ElapsedUs() * 1e-6;
+    if (robot_.collisions() > collisions_before) {
+      result_.collision_places.push_back({robot_.sim_time_s(), robot_.true_pose().translation()});
+    }
     FeedSensors();
   }
   // The final optimisation may still move submaps: measure the map users get.

@@ -39,10 +39,17 @@ struct CoverageSample {
 // A goal the goal manager issued, judged against the true world.
 struct IssuedGoal {
   double sim_time_s = 0.0;
+  // The navigation point, and where the robot was sent for it (the stand-off
+  // point before it, or the point itself; GoalManagerOptions::max_stand_off_m).
   Eigen::Vector2d goal_world = Eigen::Vector2d::Zero();
+  Eigen::Vector2d target_world = Eigen::Vector2d::Zero();
   Eigen::Vector2d robot_world = Eigen::Vector2d::Zero();  // true position then
-  // False when the bare disc could not get there from where it stood.
+  // False when the bare disc could not get within the goal tolerance of the
+  // target from where it stood: the robot was sent somewhere it cannot be.
   bool reachable_in_truth = true;
+  // The same for the navigation point itself (a frontier point on the edge
+  // of unseen furniture is not; the stand-off exists for those).
+  bool point_reachable_in_truth = true;
 };
 
 struct ExplorationProgress {
@@ -75,6 +82,9 @@ struct ExplorationResult {
   explore::ExploreCounters counters;
   // Issued goals the true world makes unreachable for the robot disc.
   int unreachable_goals = 0;
+  // Issued navigation points the disc could not get within the goal
+  // tolerance of (whatever the stand-off made of them).
+  int unreachable_points = 0;
   int collisions = 0;
   bool returned_home = false;
   // Frontier points left when the goal manager finished (0 when complete).
@@ -82,6 +92,12 @@ struct ExplorationResult {
   int reachable_frontier_left = 0;  // of frontier_left, reachable by a plan
   std::vector<CoverageSample> coverage_samples;
   std::vector<IssuedGoal> goals;
+  // Where each collision began (true position, world frame) and when.
+  struct Collision {
+    double sim_time_s = 0.0;
+    Eigen::Vector2d robot_world = Eigen::Vector2d::Zero();
+  };
+  std::vector<Collision> collision_places;
   // True poses at every scan time (world frame); estimated poses of the SLAM
   // nodes are MapBuilder::GetTrajectory() mapped by world_from_map.
   std::vector<slam::TimedPose> truth;
@@ -129,7 +145,7 @@ class ExplorationLoop {
   // has passed; returns true if it did.
   bool MaybeUpdateMap(bool force);
   void MeasureCoverage();
-  void RecordIssuedGoal(const Eigen::Vector2d& goal_map);
+  void RecordIssuedGoal(const Eigen::Vector2d& goal_map, const Eigen::Vector2d& target_map);
   std::optional<Termination> CheckTermination(const explore::ExploreStatus& status) const;
 
   const ExplorationOptions options_;

@@ -106,7 +106,7 @@ TEST(ExplorationLoopTest, ARunThatCannotFinishEndsByItself) {
 
 TEST(ExplorationLoopTest, BadOptionsAndStartsAreInputErrors) {
   ExplorationOptions o;
-  o.frontier.inflation_radius_m = 0.25;  // below the planner's 0.40
+  o.explore.frontier_inflation_radius_m = 0.25;  // below the planner's 0.30 in narrow passages
   EXPECT_THROW(Explore(o, 1), InputError);
   o = {};
   o.explore.strategy = "magic";

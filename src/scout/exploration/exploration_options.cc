@@ -29,6 +29,12 @@ std::string JoinNames(const std::vector<std::string>& names) {
 
 }  // namespace
 
+frontier::FrontierOptions EffectiveFrontierOptions(const ExplorationOptions& options) {
+  frontier::FrontierOptions f = options.frontier;
+  f.inflation_radius_m = options.explore.frontier_inflation_radius_m;
+  return f;
+}
+
 explore::TraversabilityOptions PlanningTraversability(const ExplorationOptions& options) {
   explore::TraversabilityOptions t = options.explore.traversability;
   t.robot_radius_m = options.robot.robot.radius_m;
@@ -80,13 +86,20 @@ void CheckExplorationOptions(const ExplorationOptions& options) {
     throw InputError(std::string("explore: ") + error.what());
   }
   // The frontier detector decides which frontiers are reachable; with a
-  // smaller inflation than the planner's it offers goals no plan reaches.
-  const double planner_inflation = PlanningTraversability(options).inflation_radius_m();
-  if (options.frontier.inflation_radius_m + 1e-9 < planner_inflation) {
-    throw InputError("contradictory options: frontier.inflation_radius_m (" +
-                     std::to_string(options.frontier.inflation_radius_m) +
-                     ") is smaller than robot.radius_m + explore.traversability.safety_margin_m (" +
-                     std::to_string(planner_inflation) + ")");
+  // smaller inflation than the planner's narrowest clearance it offers goals
+  // no plan reaches.
+  const explore::TraversabilityOptions t = PlanningTraversability(options);
+  const double planner_clearance =
+      t.robot_radius_m + std::min(t.narrow_margin_m, t.safety_margin_m);
+  if (!(e.frontier_inflation_radius_m >= 0.0) || !std::isfinite(e.frontier_inflation_radius_m)) {
+    throw InputError("explore.frontier_inflation_radius_m: expected a finite value >= 0");
+  }
+  if (e.frontier_inflation_radius_m + 1e-9 < planner_clearance) {
+    throw InputError("contradictory options: explore.frontier_inflation_radius_m (" +
+                     std::to_string(e.frontier_inflation_radius_m) +
+                     ") is smaller than robot.radius_m + the smaller of explore.traversability."
+                     "narrow_margin_m and safety_margin_m (" +
+                     std::to_string(planner_clearance) + ")");
   }
   if (e.follower.max_linear_speed_mps > options.robot.robot.max_linear_speed_mps + 1e-9 ||
       e.follower.max_angular_speed_radps > options.robot.robot.max_angular_speed_radps + 1e-9) {

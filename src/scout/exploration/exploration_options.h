@@ -70,6 +70,20 @@ struct ExploreOptions {
     double rotation_weight = 1.0;
   };
   LocalSlam local_slam;
+  // Replaces frontier.inflation_radius_m for the frontier detector's
+  // reachability search in exploration (replay and frontier-bench keep it).
+  // The paper's 0.40 m is the default. Walls in the SLAM map stand up to a
+  // cell proud of the true ones, so a 0.85 m door measures about 0.75 m and
+  // 0.40 m seals it: willow-garage (seed 1) ends "complete" at coverage 0.74
+  // with rooms behind such doors seen only through them (its true map has
+  // 1033 m² reachable with 0.40 m of clearance, 687 m² with 0.45 m). Smaller
+  // values were measured and are worse: the fused map (all submaps) narrows
+  // doors more than one submap does, so the robot is sent into rooms it then
+  // cannot plan out of. willow seed 1: 0.30 -> 0.50, 0.35 -> 0.63 (both end
+  // with thousands of frontier points no plan reaches); office seed 1: 0.30
+  // -> 1.000, 0.35 -> 0.995 with 19 goals the true world made unreachable.
+  // It must be at least the clearance the planner keeps in narrow passages.
+  double frontier_inflation_radius_m = 0.40;
   explore::GoalManagerOptions goals;
   // robot_radius_m is taken from the robot section (robot.radius_m).
   explore::TraversabilityOptions traversability;
@@ -90,12 +104,16 @@ struct ExplorationOptions {
 
 // Throws InputError naming the key ("explore.dt_s") of a bad or contradictory
 // option: out-of-range values, an unknown strategy or goal policy, a frontier
-// inflation smaller than the planner's (frontier points the planner could not
-// reach), follower speeds above the robot's limits.
+// inflation smaller than the clearance the planner keeps in narrow passages
+// (frontier points no plan could reach), follower speeds above the robot's
+// limits.
 void CheckExplorationOptions(const ExplorationOptions& options);
 
 // Returns options.slam with explore.local_slam applied: what the loop runs.
 slam::SlamOptions EffectiveSlamOptions(const ExplorationOptions& options);
+
+// Returns options.frontier with explore.frontier_inflation_radius_m applied.
+frontier::FrontierOptions EffectiveFrontierOptions(const ExplorationOptions& options);
 
 // Returns the traversability the goal manager plans with: the explore
 // section's, with the robot's radius.

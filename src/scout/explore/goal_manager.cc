@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "scout/explore/option_check.h"
+#include "scout/explore/stand_off.h"
 
 namespace scout::explore {
 
@@ -26,6 +27,7 @@ void Validate(const GoalManagerOptions& o) {
   CheckAtLeast(g, "goal_frontier_radius_m", o.goal_frontier_radius_m, 0.0);
   CheckAtLeast(g, "goal_switch_margin", o.goal_switch_margin, 0.0);
   CheckAtLeast(g, "goal_match_radius_m", o.goal_match_radius_m, 0.0);
+  CheckAtLeast(g, "max_stand_off_m", o.max_stand_off_m, 0.0);
   if (!o.boundary.empty() && o.boundary.size() < 3) {
     RejectOption(g, "boundary", "no vertices or at least 3 vertices",
                  static_cast<double>(o.boundary.size()));
@@ -96,6 +98,7 @@ void GoalManager::Start() {
 void GoalManager::Stop() {
   state_ = ExploreState::kIdle;
   goal_.reset();
+  target_.reset();
   follower_.Clear();
 }
 
@@ -202,8 +205,16 @@ GoalManager::Selection GoalManager::SelectAndPlan(const ExploreInput& in) {
 void GoalManager::BeginDriving(const Eigen::Vector2d& goal, const PlannedPath& path,
                                const ExploreInput& in, ExploreState state, bool new_goal) {
   goal_ = Anchor(goal, in.submaps);
-  follower_.SetPath(path.points);
-  if (new_goal || path.length_m < best_remaining_m_) best_remaining_m_ = path.length_m;
+  // Home is where the robot stood: no stand-off needed.
+  std::vector<Eigen::Vector2d> points =
+      state == ExploreState::kDriving ? CutAtStandOff(*map_, path.points, options_.max_stand_off_m,
+                                                      follower_.options().goal_tolerance_m)
+                                      : path.points;
+  double length_m = 0.0;
+  for (size_t i = 1; i < points.size(); ++i) length_m += (points[i] - points[i - 1]).norm();
+  target_ = points.back();
+  follower_.SetPath(std::move(points));
+  if (new_goal || length_m < best_remaining_m_) best_remaining_m_ = length_m;
   last_replan_s_ = in.time_s;
   if (new_goal) {
     last_progress_s_ = in.time_s;
@@ -220,6 +231,7 @@ void GoalManager::EndGoal(ExploreState next) {
   moving_since_.reset();
   backing_up_since_.reset();
   goal_.reset();
+  target_.reset();
   follower_.Clear();
   state_ = next;
   need_selection_ = true;
@@ -423,6 +435,7 @@ ExploreStatus GoalManager::Update(const ExploreInput& in) {
   }
   status.state = state_;
   if (goal_) status.goal = Resolve(*goal_, in.submaps);
+  status.target = target_;
   if (follower_.has_path()) status.path = follower_.path();
   status.blacklisted = failed_.Blacklisted(in.submaps);
   status.candidates = candidates_;

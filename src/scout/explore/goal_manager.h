@@ -60,6 +60,11 @@ struct GoalManagerOptions {
   double back_up_distance_m = 0.3;
   double back_up_speed_mps = 0.15;
   double back_up_timeout_s = 4.0;
+  // The robot is sent to the last point of the path, at most this far (path
+  // metres) before a goal, where its disc covers known-free cells only: a
+  // frontier point may lie on the edge of unseen furniture (see
+  // CutAtStandOff). 0 drives to the goal itself.
+  double max_stand_off_m = 0.5;
   // After exploring, drive back to where Start() was called.
   bool return_to_start = false;
   // Optional exploration area: a simple polygon in the global frame (at least
@@ -113,7 +118,10 @@ struct ExploreStatus {
   ExploreState state = ExploreState::kIdle;
   VelocityCommand command;
   std::optional<Eigen::Vector2d> goal;  // global
-  std::vector<Eigen::Vector2d> path;    // global, for display
+  // Where the robot's centre is sent (global): the goal, or the stand-off
+  // point before it (GoalManagerOptions::max_stand_off_m).
+  std::optional<Eigen::Vector2d> target;
+  std::vector<Eigen::Vector2d> path;  // global, for display
   std::vector<Eigen::Vector2d> blacklisted;
   // The goal candidates of the latest selection, best first (global).
   std::vector<Eigen::Vector2d> candidates;
@@ -215,6 +223,8 @@ class GoalManager {
   bool started_once_ = false;
   std::optional<AnchoredPoint> home_;
   std::optional<AnchoredPoint> goal_;
+  // The end of the path handed to the follower (global).
+  std::optional<Eigen::Vector2d> target_;
   std::unique_ptr<PlanningMap> map_;
   bool map_dirty_ = true;
   // PLANNING selects only after a map change or a goal ended, not every cycle.

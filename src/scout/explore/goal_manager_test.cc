@@ -58,6 +58,31 @@ TEST(GoalManagerTest, IdleUntilStartedAndStopsOnRequest) {
   EXPECT_FALSE(stopped.goal.has_value());
 }
 
+TEST(GoalManagerTest, SendsTheRobotToAStandOffInKnownFreeSpace) {
+  // The goal is a frontier point next to unknown space, where a wall may
+  // stand: the robot is sent to the last path point whose disc is known free.
+  Room room;
+  GoalManager gm = MakeManager();
+  gm.Start();
+  const ExploreStatus s = gm.Update(room.Input(0, room.b.At(10, 20), true));
+  ASSERT_EQ(s.state, ExploreState::kDriving);
+  ASSERT_TRUE(s.goal && s.target);
+  ASSERT_FALSE(s.path.empty());
+  EXPECT_EQ(s.path.back(), *s.target);
+  EXPECT_GT((*s.goal - *s.target).norm(), 0.1);
+  EXPECT_LE((*s.goal - *s.target).norm(), 0.5 + 1e-9);
+  // Unknown starts at x = 4.1 m; the 0.2 m disc stays clear of it.
+  EXPECT_LE(s.target->x() + 0.2, 4.1 + 1e-9);
+
+  GoalManagerOptions at_goal = NoStuckRecovery();
+  at_goal.max_stand_off_m = 0.0;
+  GoalManager direct = MakeManager(at_goal);
+  direct.Start();
+  const ExploreStatus d = direct.Update(room.Input(0, room.b.At(10, 20), true));
+  ASSERT_TRUE(d.goal && d.target);
+  EXPECT_LE((*d.goal - *d.target).norm(), 0.1 + 1e-9);  // at most the goal snap
+}
+
 TEST(GoalManagerTest, ProgressTimeoutMarksTheGoalFailedAndPicksAnother) {
   Room room;
   GoalManager gm = MakeManager();

@@ -25,6 +25,7 @@ void ReadGoals(YamlSection s, explore::GoalManagerOptions* o) {
   s.ReadNonNegative("goal_frontier_radius_m", &o->goal_frontier_radius_m);
   s.ReadNonNegative("goal_switch_margin", &o->goal_switch_margin);
   s.ReadNonNegative("goal_match_radius_m", &o->goal_match_radius_m);
+  s.ReadNonNegative("max_stand_off_m", &o->max_stand_off_m);
   s.ReadBool("return_to_start", &o->return_to_start);
   {
     YamlSection f = s.Section("failed_goals");
@@ -111,6 +112,7 @@ void ReadExploreOptions(YamlSection s, exploration::ExploreOptions* o) {
     l.ReadNonNegative("rotation_weight", &o->local_slam.rotation_weight);
     l.RejectUnknownKeys();
   }
+  s.ReadNonNegative("frontier_inflation_radius_m", &o->frontier_inflation_radius_m);
   ReadGoals(s.Section("goals"), &o->goals);
   {
     YamlSection t = s.Section("traversability");

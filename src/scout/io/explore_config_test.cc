@@ -34,7 +34,9 @@ TEST_F(ExploreConfigTest, DefaultFileMatchesTheBuiltInDefaults) {
   EXPECT_DOUBLE_EQ(c.explore.local_slam.translation_weight,
                    d.explore.local_slam.translation_weight);
   EXPECT_DOUBLE_EQ(c.explore.local_slam.rotation_weight, d.explore.local_slam.rotation_weight);
+  EXPECT_DOUBLE_EQ(c.explore.frontier_inflation_radius_m, d.explore.frontier_inflation_radius_m);
   EXPECT_DOUBLE_EQ(c.explore.goals.progress_timeout_s, d.explore.goals.progress_timeout_s);
+  EXPECT_DOUBLE_EQ(c.explore.goals.max_stand_off_m, d.explore.goals.max_stand_off_m);
   EXPECT_EQ(c.explore.goals.return_to_start, d.explore.goals.return_to_start);
   EXPECT_EQ(c.explore.goals.failed_goals.max_failures, d.explore.goals.failed_goals.max_failures);
   EXPECT_DOUBLE_EQ(c.explore.traversability.safety_margin_m,

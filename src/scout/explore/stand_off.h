@@ -1,0 +1,33 @@
+#ifndef SCOUT_EXPLORE_STAND_OFF_H_
+#define SCOUT_EXPLORE_STAND_OFF_H_
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "scout/explore/planning_map.h"
+
+namespace scout::explore {
+
+// Where on a path to a frontier goal the robot should stop.
+//
+// A frontier point is a free cell next to unknown space, and unknown space
+// may hide a wall: a frontier that a grazing ray cut along the unseen side of
+// a desk lies on the desk's edge, where no robot can stand (office, seed 1:
+// every goal the true world made unreachable was such a point, 1-3 cm inside
+// furniture). The robot is therefore sent to the last point of the path from
+// which its disc (radius robot_radius_m) covers known-free cells only, at
+// most 'max_back_off_m' of path before the goal; it sees the frontier from
+// there. Returns the path cut at that point; the path itself when its end
+// already qualifies, when no point within max_back_off_m does (the robot
+// then drives to the goal as before), or when the cut would leave less than
+// 'min_length_m' of path (the robot would stop where it stands).
+std::vector<Eigen::Vector2d> CutAtStandOff(const PlanningMap& map,
+                                           const std::vector<Eigen::Vector2d>& path,
+                                           double max_back_off_m, double min_length_m);
+
+// True when every cell the robot's disc at 'p' overlaps is known free.
+bool DiscInKnownFree(const PlanningMap& map, const Eigen::Vector2d& p);
+
+}  // namespace scout::explore
+
+#endif  // SCOUT_EXPLORE_STAND_OFF_H_
