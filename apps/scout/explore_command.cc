@@ -114,6 +114,7 @@ nlohmann::json Summary(const ExploreArgs& args, const exploration::ExplorationLo
                 {"retried", r.counters.goals_retried},
                 {"escapes", r.counters.escapes},
                 {"recoveries", r.counters.recoveries},
+                {"guard_stops", r.counters.guard_stops},
                 {"frontier_left", r.frontier_left},
                 {"reachable_frontier_left", r.reachable_frontier_left}};
   // Where each goal the true world made unreachable was, and the robot then

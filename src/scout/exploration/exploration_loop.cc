@@ -80,6 +80,8 @@ void ExplorationLoop::FeedSensorsUntimed() {
   }
   std::optional<sensor::LaserScan> scan = robot_.MaybeScan();
   if (!scan) return;
+  // The lidar sits at the robot's centre: its returns are the guard's view.
+  latest_returns_ = sensor::ToRangeData(*scan, options_.slam.local.range_filter).returns;
   result_.truth.push_back({scan->time_s, robot_.true_pose()});
   const bool inserted = builder_->AddScan(*scan);
   builder_->DrainEvents();
@@ -156,8 +158,15 @@ void ExplorationLoop::RecordIssuedGoal(const Eigen::Vector2d& goal_map,
                                        const Eigen::Vector2d& target_map) {
   IssuedGoal g;
   g.sim_time_s = robot_.sim_time_s();
-  g.goal_world = world_from_map_ * goal_map;
-  g.target_world = world_from_map_ * target_map;
+  // The robot drives to the goal relative to where it believes it is, so
+  // that is where the goal lies in the true world: relative to its true
+  // pose. (The start alignment world_from_map_ would misplace every goal by
+  // the map's drift at the time, which loop closures only later remove:
+  // office seed 1 had goals "inside" furniture the robot's own map placed
+  // 0.2 m farther on.)
+  const geometry::Rigid2d world_from_estimate = robot_.true_pose() * EstimatedPose().inverse();
+  g.goal_world = world_from_estimate * goal_map;
+  g.target_world = world_from_estimate * target_map;
   g.robot_world = robot_.true_pose().translation();
   // Reached means within the follower's tolerance, so that is the slack.
   const double tolerance_m = options_.explore.follower.goal_tolerance_m;
@@ -222,6 +231,7 @@ ExplorationResult ExplorationLoop::Run(const ProgressCallback& progress,
       in.frontier = &frontier_;
       in.submaps = submap_poses_;
       in.map_changed = changed;
+      in.obstacles = &latest_returns_;
       const frontier::Stopwatch watch;
       status = goals_.Update(in);
       result_.timings.goals_s += watch.ElapsedUs() * 1e-6;

@@ -40,7 +40,9 @@ struct CoverageSample {
 struct IssuedGoal {
   double sim_time_s = 0.0;
   // The navigation point, and where the robot was sent for it (the stand-off
-  // point before it, or the point itself; GoalManagerOptions::max_stand_off_m).
+  // point before it, or the point itself; GoalManagerOptions::max_stand_off_m),
+  // placed in the world relative to the robot's true pose as they were
+  // relative to its estimated pose.
   Eigen::Vector2d goal_world = Eigen::Vector2d::Zero();
   Eigen::Vector2d target_world = Eigen::Vector2d::Zero();
   Eigen::Vector2d robot_world = Eigen::Vector2d::Zero();  // true position then
@@ -156,6 +158,8 @@ class ExplorationLoop {
   std::unique_ptr<slam::MapBuilder> builder_;
   explore::GoalManager goals_;
   geometry::Rigid2d world_from_map_;
+  // The latest scan's returns (robot frame), for the collision guard.
+  std::vector<Eigen::Vector2d> latest_returns_;
 
   // Pose estimate: global-from-local of the newest node, the newest matched
   // local pose and the odometry at its scan, and the newest odometry.

@@ -28,6 +28,7 @@ void Validate(const GoalManagerOptions& o) {
   CheckAtLeast(g, "goal_switch_margin", o.goal_switch_margin, 0.0);
   CheckAtLeast(g, "goal_match_radius_m", o.goal_match_radius_m, 0.0);
   CheckAtLeast(g, "max_stand_off_m", o.max_stand_off_m, 0.0);
+  Validate(o.guard);
   if (!o.boundary.empty() && o.boundary.size() < 3) {
     RejectOption(g, "boundary", "no vertices or at least 3 vertices",
                  static_cast<double>(o.boundary.size()));
@@ -397,8 +398,17 @@ void GoalManager::Drive(const ExploreInput& in, ExploreStatus& status) {
     return;
   }
   status.command = fs.command;
-  // Commanded forward without moving: stuck against something.
-  if (status.command.linear_mps <= 0.0) {
+  const bool forward = status.command.linear_mps > 0.0;
+  if (in.obstacles) {
+    const GuardedCommand g =
+        GuardCommand(status.command, *in.obstacles, map_->options().robot_radius_m, options_.guard);
+    status.command = g.command;
+    if (g.stopped && !guard_stopped_) ++counters_.guard_stops;
+    guard_stopped_ = g.stopped;
+  }
+  // Commanded forward without moving (stuck against something, or held by
+  // the guard while turning does not clear the way).
+  if (!forward) {
     moving_since_.reset();
   } else if (!moving_since_ ||
              (here - moving_since_->second).norm() >= options_.stuck_min_motion_m) {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "scout/explore/anchored_point.h"
+#include "scout/explore/collision_guard.h"
 #include "scout/explore/failed_goal_memory.h"
 #include "scout/explore/goal_policies.h"
 #include "scout/explore/path_distance_field.h"
@@ -65,6 +66,9 @@ struct GoalManagerOptions {
   // frontier point may lie on the edge of unseen furniture (see
   // CutAtStandOff). 0 drives to the goal itself.
   double max_stand_off_m = 0.5;
+  // Forward commands are checked against the latest scan (ExploreInput::
+  // obstacles): see CollisionGuardOptions.
+  CollisionGuardOptions guard;
   // After exploring, drive back to where Start() was called.
   bool return_to_start = false;
   // Optional exploration area: a simple polygon in the global frame (at least
@@ -96,6 +100,9 @@ struct ExploreInput {
   const std::vector<Eigen::Vector2d>* frontier = nullptr;
   // Current global poses of the submaps (empty: goals are kept globally).
   std::vector<SubmapPose> submaps;
+  // The latest scan's returns in the robot frame (metres), for the collision
+  // guard; null: no guard.
+  const std::vector<Eigen::Vector2d>* obstacles = nullptr;
   // True when the map or the frontier changed since the previous update.
   bool map_changed = false;
 };
@@ -110,8 +117,9 @@ struct ExploreCounters {
   int goals_dropped = 0;      // the map put it inside the inflated band
   int goals_retried = 0;      // lifted from the blacklist after a map change
   int selections = 0;
-  int escapes = 0;     // searches that started by leaving the band or a pocket
-  int recoveries = 0;  // back-ups after the robot got stuck
+  int escapes = 0;      // searches that started by leaving the band or a pocket
+  int recoveries = 0;   // back-ups after the robot got stuck
+  int guard_stops = 0;  // the collision guard stopped a forward command
 };
 
 struct ExploreStatus {
@@ -237,6 +245,7 @@ class GoalManager {
   // forward; and the back-up in progress, if any.
   std::optional<std::pair<double, Eigen::Vector2d>> moving_since_;
   std::optional<std::pair<double, Eigen::Vector2d>> backing_up_since_;
+  bool guard_stopped_ = false;
   std::optional<double> empty_since_s_;
   int frontier_left_ = 0;
   int reachable_frontier_left_ = 0;

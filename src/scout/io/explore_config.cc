@@ -28,6 +28,12 @@ void ReadGoals(YamlSection s, explore::GoalManagerOptions* o) {
   s.ReadNonNegative("max_stand_off_m", &o->max_stand_off_m);
   s.ReadBool("return_to_start", &o->return_to_start);
   {
+    YamlSection g = s.Section("guard");
+    g.ReadNonNegative("clearance_m", &o->guard.clearance_m);
+    g.ReadNonNegative("horizon_s", &o->guard.horizon_s);
+    g.RejectUnknownKeys();
+  }
+  {
     YamlSection f = s.Section("failed_goals");
     f.ReadNonNegative("blacklist_radius_m", &o->failed_goals.blacklist_radius_m);
     f.ReadPositive("retry_radius_m", &o->failed_goals.retry_radius_m);

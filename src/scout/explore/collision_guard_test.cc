@@ -1,0 +1,91 @@
+#include "scout/explore/collision_guard.h"
+
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+
+namespace scout::explore {
+namespace {
+
+constexpr double kRadius = 0.2;
+
+// Drives the guarded command in small steps (re-guarding each step, obstacles
+// moved into the new robot frame) and returns the closest approach.
+double ClosestApproach(const VelocityCommand& command, std::vector<Eigen::Vector2d> obstacles,
+                       const CollisionGuardOptions& options, double duration_s) {
+  Eigen::Vector2d pos(0, 0);
+  double heading = 0.0;
+  double closest = 1e9;
+  const double dt = 0.01;
+  for (double t = 0; t < duration_s; t += dt) {
+    std::vector<Eigen::Vector2d> local;
+    const Eigen::Rotation2Dd to_robot(-heading);
+    for (const Eigen::Vector2d& p : obstacles) local.push_back(to_robot * (p - pos));
+    const GuardedCommand g = GuardCommand(command, local, kRadius, options);
+    heading += g.command.angular_radps * dt;
+    pos += g.command.linear_mps * dt * Eigen::Vector2d(std::cos(heading), std::sin(heading));
+    for (const Eigen::Vector2d& p : obstacles) closest = std::min(closest, (p - pos).norm());
+  }
+  return closest;
+}
+
+TEST(CollisionGuardTest, FreeWayAndBackwardAndTurningCommandsPassUnchanged) {
+  const std::vector<Eigen::Vector2d> behind = {{-0.3, 0.0}, {0.0, 0.5}, {0.0, -0.5}};
+  const GuardedCommand g = GuardCommand({0.5, 0.2}, behind, kRadius, {});
+  EXPECT_FALSE(g.limited);
+  EXPECT_DOUBLE_EQ(g.command.linear_mps, 0.5);
+  EXPECT_DOUBLE_EQ(g.command.angular_radps, 0.2);
+  const std::vector<Eigen::Vector2d> ahead = {{0.25, 0.0}};
+  EXPECT_FALSE(GuardCommand({-0.1, 0.0}, ahead, kRadius, {}).limited);  // backing away
+  EXPECT_FALSE(GuardCommand({0.0, 1.0}, ahead, kRadius, {}).limited);   // on the spot
+  CollisionGuardOptions off;
+  off.horizon_s = 0.0;
+  EXPECT_FALSE(GuardCommand({0.5, 0.0}, ahead, kRadius, off).limited);
+}
+
+TEST(CollisionGuardTest, SlowsDownAndStopsBeforeAPostAhead) {
+  const std::vector<Eigen::Vector2d> post = {{1.0, 0.05}};
+  const GuardedCommand near = GuardCommand({0.5, 0.0}, post, kRadius, {});
+  // 1 m away, 0.77 m of free travel at most: 0.5 m/s over 1 s fits.
+  EXPECT_FALSE(near.limited);
+  const GuardedCommand closer = GuardCommand({0.5, 0.0}, {{0.5, 0.05}}, kRadius, {});
+  EXPECT_TRUE(closer.limited);
+  EXPECT_FALSE(closer.stopped);
+  EXPECT_LT(closer.command.linear_mps, 0.5);
+  const GuardedCommand touching = GuardCommand({0.5, 0.3}, {{0.235, 0.0}}, kRadius, {});
+  EXPECT_TRUE(touching.stopped);
+  EXPECT_EQ(touching.command.linear_mps, 0.0);
+  EXPECT_DOUBLE_EQ(touching.command.angular_radps, 0.3);  // still turns
+  // Driven to the end, it never comes within the clearance.
+  CollisionGuardOptions o;
+  EXPECT_GE(ClosestApproach({0.5, 0.0}, post, o, 5.0), kRadius + o.clearance_m - 0.011);
+}
+
+TEST(CollisionGuardTest, LetsTheRobotPassBesideAWall) {
+  // A wall parallel to the heading, 0.3 m to the left: the disc keeps 0.1 m.
+  std::vector<Eigen::Vector2d> wall;
+  for (double x = -1.0; x <= 3.0; x += 0.05) wall.push_back({x, 0.3});
+  const GuardedCommand g = GuardCommand({0.5, 0.0}, wall, kRadius, {});
+  EXPECT_FALSE(g.limited);
+}
+
+RC_GTEST_PROP(CollisionGuardProperty, NeverDrivesIntoAnObstacle, ()) {
+  // Random obstacles outside the disc plus clearance; any forward command.
+  const int n = *rc::gen::inRange(1, 20);
+  std::vector<Eigen::Vector2d> obstacles;
+  for (int i = 0; i < n; ++i) {
+    const double angle = *rc::gen::inRange(-157, 158) * 0.01;
+    const double range = 0.25 + *rc::gen::inRange(0, 200) * 0.01;
+    obstacles.push_back(range * Eigen::Vector2d(std::cos(angle), std::sin(angle)));
+  }
+  const VelocityCommand command{*rc::gen::inRange(1, 51) * 0.01,
+                                *rc::gen::inRange(-100, 101) * 0.01};
+  CollisionGuardOptions o;
+  const double closest = ClosestApproach(command, obstacles, o, 3.0);
+  RC_ASSERT(closest >= kRadius);
+}
+
+}  // namespace
+}  // namespace scout::explore
