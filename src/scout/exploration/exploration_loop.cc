@@ -129,6 +129,10 @@ bool ExplorationLoop::MaybeUpdateMap(bool force) {
     submap_poses_.push_back({id, submaps[i].global_pose});
   }
   fused_map_ = fusion_.Update(inputs);
+  driven_.clear();
+  for (const slam::TimedPose& node : builder_->GetTrajectory()) {
+    driven_.push_back(node.pose.translation());
+  }
   // Grid changes are deferred by the engine (FrontierOptions::
   // defer_grid_changes); apply them now that the frontier is needed.
   engine_.Flush();
@@ -232,6 +236,7 @@ ExplorationResult ExplorationLoop::Run(const ProgressCallback& progress,
       in.submaps = submap_poses_;
       in.map_changed = changed;
       in.obstacles = &latest_returns_;
+      in.driven = &driven_;
       const frontier::Stopwatch watch;
       status = goals_.Update(in);
       result_.timings.goals_s += watch.ElapsedUs() * 1e-6;

@@ -160,6 +160,8 @@ class ExplorationLoop {
   geometry::Rigid2d world_from_map_;
   // The latest scan's returns (robot frame), for the collision guard.
   std::vector<Eigen::Vector2d> latest_returns_;
+  // SLAM's node positions (global), refreshed with the fused map.
+  std::vector<Eigen::Vector2d> driven_;
 
   // Pose estimate: global-from-local of the newest node, the newest matched
   // local pose and the odometry at its scan, and the newest odometry.

@@ -117,6 +117,7 @@ void GoalManager::RefreshMap(const ExploreInput& in) {
   if (map_ && !map_dirty_) return;
   map_ = std::make_unique<PlanningMap>(*in.map, traversability_,
                                        planner_.options().clearance_weight > 0.0);
+  if (in.driven) map_->AllowDriven(*in.driven);
   map_dirty_ = false;
   counters_.goals_retried += failed_.RetryChangedGoals(*map_, in.submaps);
   visited_.RetryChangedGoals(*map_, in.submaps);

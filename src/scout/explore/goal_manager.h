@@ -100,6 +100,10 @@ struct ExploreInput {
   const std::vector<Eigen::Vector2d>* frontier = nullptr;
   // Current global poses of the submaps (empty: goals are kept globally).
   std::vector<SubmapPose> submaps;
+  // The robot's trajectory so far (global positions, oldest first): where it
+  // has driven stays passable (TraversabilityOptions::driven_width_m). Read
+  // when the map changed; null: none.
+  const std::vector<Eigen::Vector2d>* driven = nullptr;
   // The latest scan's returns in the robot frame (metres), for the collision
   // guard; null: no guard.
   const std::vector<Eigen::Vector2d>* obstacles = nullptr;

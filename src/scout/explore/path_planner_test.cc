@@ -114,6 +114,29 @@ TEST(PathPlannerTest, UnknownCellsAreTraversableOnlyWhenConfigured) {
   EXPECT_TRUE(PathPlanner({}).Plan(PlanningMap(b.map(), o), b.At(5, 5), b.At(35, 5)));
 }
 
+TEST(PathPlannerTest, WhereTheRobotDroveStaysPassable) {
+  // Two rooms joined by a door 0.5 m wide in the map: below the 0.60 m a
+  // 0.20 m robot with a 0.10 m narrow margin needs, so no plan crosses it,
+  // unless the robot's own trajectory came through it.
+  MapBuilder b(60, 30, 0.1, grid::CellState::kFree);
+  b.Wall(30, 0, 30, 12).Wall(30, 18, 30, 29);  // door: cells 13-17
+  const Eigen::Vector2d left = b.At(10, 15), right = b.At(50, 15);
+  PlanningMap sealed(b.map(), TraversabilityOptions{});
+  EXPECT_FALSE(PathPlanner({}).Plan(sealed, left, right));
+  PlanningMap driven(b.map(), TraversabilityOptions{});
+  driven.AllowDriven({b.At(40, 15), b.At(30.5, 15.5), b.At(20, 15)});
+  const std::optional<PlannedPath> path = PathPlanner({}).Plan(driven, left, right);
+  ASSERT_TRUE(path.has_value());
+  EXPECT_TRUE(driven.narrow(b.map().limits.FlatIndex({30, 15})));
+  EXPECT_FALSE(driven.traversable(b.map().limits.FlatIndex({30, 12})));  // walls stay walls
+  // Trajectory points too far apart (a relocalisation jump) are not joined.
+  TraversabilityOptions short_gap;
+  short_gap.driven_max_gap_m = 0.5;
+  PlanningMap jumped(b.map(), short_gap);
+  jumped.AllowDriven({b.At(40, 15), b.At(20, 15)});
+  EXPECT_FALSE(PathPlanner({}).Plan(jumped, left, right));
+}
+
 TEST(PathPlannerTest, StartInsideTheInflatedBandLeavesIt) {
   MapBuilder b(40, 40, 0.1, grid::CellState::kFree);
   b.Wall(0, 0, 39, 0);

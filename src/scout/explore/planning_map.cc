@@ -16,6 +16,8 @@ void Validate(const TraversabilityOptions& o) {
   CheckAtLeast("traversability", "safety_margin_m", o.safety_margin_m, 0.0);
   CheckAtLeast("traversability", "goal_snap_radius_m", o.goal_snap_radius_m, 0.0);
   CheckAtLeast("traversability", "narrow_margin_m", o.narrow_margin_m, 0.0);
+  CheckAtLeast("traversability", "driven_width_m", o.driven_width_m, 0.0);
+  CheckAtLeast("traversability", "driven_max_gap_m", o.driven_max_gap_m, 0.0);
   CheckAtLeast("traversability", "narrow_cost_factor", o.narrow_cost_factor, 1.0);
   CheckAtLeast("traversability", "escape_radius_m", o.escape_radius_m, 0.0);
 }
@@ -51,6 +53,29 @@ PlanningMap::PlanningMap(const grid::OccupancyMap& map, const TraversabilityOpti
     clearance_m_ = grid::SquaredDistanceToNearestSite(occupied, limits_.width(), limits_.height());
     const float res = static_cast<float>(limits_.resolution());
     for (float& c : clearance_m_) c = std::sqrt(c) * res;
+  }
+}
+
+void PlanningMap::AllowDriven(const std::vector<Eigen::Vector2d>& trajectory) {
+  const double width = options_.driven_width_m;
+  if (width <= 0.0) return;
+  const auto allow = [&](const Eigen::Vector2d& p) {
+    for (const grid::CellIndex& c : CellsWithin(limits_, p, width)) {
+      const int64_t i = limits_.FlatIndex(c);
+      if (states_[i] == grid::CellState::kFree && traversable_[i] == 0) {
+        traversable_[i] = kNarrow;
+        has_narrow_ = true;
+      }
+    }
+  };
+  const double step = 0.5 * limits_.resolution();
+  for (size_t i = 0; i < trajectory.size(); ++i) {
+    allow(trajectory[i]);
+    if (i == 0) continue;
+    const Eigen::Vector2d a = trajectory[i - 1], b = trajectory[i];
+    const double len = (b - a).norm();
+    if (len > options_.driven_max_gap_m) continue;
+    for (double s = step; s < len; s += step) allow(a + (b - a) * (s / len));
   }
 }
 

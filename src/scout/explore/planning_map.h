@@ -44,6 +44,14 @@ struct TraversabilityOptions {
   // cells where it keeps at least the clearance it has, searched within this
   // radius of it (metres; see StartRegion). 0 strands it where it stands.
   double escape_radius_m = 1.0;
+  // Known-free cells within this distance of the robot's own trajectory are
+  // narrow passages even where the inflation blocks them: the robot has been
+  // there. The SLAM map keeps narrowing a door as scans of its posts add up
+  // (and the fused map more than any one submap), and a robot that drove
+  // into a room must not be sealed in it. 0 turns this off.
+  double driven_width_m = 0.05;
+  // Consecutive trajectory points farther apart than this are not joined.
+  double driven_max_gap_m = 1.0;
 
   double inflation_radius_m() const { return robot_radius_m + safety_margin_m; }
 };
@@ -96,6 +104,11 @@ class PlanningMap {
   // cells; diagonal steps also need both orthogonal cells, so a path never
   // squeezes between two blocked corners.
   bool StepAllowed(const grid::CellIndex& from, int k) const;
+
+  // Makes known-free cells within driven_width_m of the polyline through
+  // 'trajectory' (global positions of the robot, oldest first; segments
+  // longer than driven_max_gap_m skipped) traversable as narrow passages.
+  void AllowDriven(const std::vector<Eigen::Vector2d>& trajectory);
 
   bool has_clearance() const { return !clearance_m_.empty(); }
   // Distance in metres from the cell's centre to the nearest occupied cell's

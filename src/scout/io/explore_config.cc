@@ -128,6 +128,8 @@ void ReadExploreOptions(YamlSection s, exploration::ExploreOptions* o) {
     t.ReadNonNegative("narrow_margin_m", &o->traversability.narrow_margin_m);
     t.ReadNonNegative("narrow_cost_factor", &o->traversability.narrow_cost_factor);
     t.ReadNonNegative("escape_radius_m", &o->traversability.escape_radius_m);
+    t.ReadNonNegative("driven_width_m", &o->traversability.driven_width_m);
+    t.ReadNonNegative("driven_max_gap_m", &o->traversability.driven_max_gap_m);
     t.RejectUnknownKeys();
   }
   {
