@@ -121,6 +121,23 @@ TEST_F(ScoutCli, FrontierBenchWritesConsistentOutputs) {
   EXPECT_EQ(rows, 5 * summary["optimizations"].get<int>());
 }
 
+TEST_F(ScoutCli, FrontierBenchWithoutReferenceRunsOnlyTheNamedStrategies) {
+  const fs::path out = dir_ / "out";
+  const Result r =
+      RunScout("frontier-bench --quiet --no-reference --strategies dfd,exact --world " +
+               (dir_ / "rooms.yaml").string() + " --seed 3 --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::ifstream in(out / "summary.json");
+  const nlohmann::json summary = nlohmann::json::parse(in);
+  EXPECT_FALSE(summary["reference"].get<bool>());
+  const nlohmann::json& s = summary["frontier"]["strategies"];
+  EXPECT_FALSE(s.contains("full"));
+  ASSERT_TRUE(s.contains("exact") && s.contains("dfd"));
+  EXPECT_GT(s["dfd"]["queried_points"].get<int64_t>(), 0);
+  EXPECT_FALSE(s["exact"].contains("accuracy"));  // nothing to score against
+  EXPECT_TRUE(summary["global_frontier_points"].is_number_integer());
+}
+
 TEST_F(ScoutCli, ReportAndCompareRedrawFromTheOutputFiles) {
   const fs::path a = dir_ / "a", b = dir_ / "b";
   ASSERT_EQ(RunScout("frontier-bench --quiet --world " + (dir_ / "rooms.yaml").string() +

@@ -18,6 +18,8 @@ struct FrontierBenchArgs {
   std::string strategies = "full,dfd,bfs,direct,exact";
   std::string picture_strategy = "exact";
   bool quiet = false;
+  // Skip full recomputation (the reference): no accuracy, precision or recall.
+  bool no_reference = false;
 };
 
 // Registers `scout frontier-bench` on 'app'.

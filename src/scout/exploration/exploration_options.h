@@ -70,20 +70,21 @@ struct ExploreOptions {
     double rotation_weight = 1.0;
   };
   LocalSlam local_slam;
-  // Replaces frontier.inflation_radius_m for the frontier detector's
-  // reachability search in exploration (replay and frontier-bench keep it).
-  // The paper's 0.40 m is the default. Walls in the SLAM map stand up to a
-  // cell proud of the true ones, so a 0.85 m door measures about 0.75 m and
-  // 0.40 m seals it: willow-garage (seed 1) ends "complete" at coverage 0.74
-  // with rooms behind such doors seen only through them (its true map has
-  // 1033 m² reachable with 0.40 m of clearance, 687 m² with 0.45 m). Smaller
-  // values were measured and are worse: the fused map (all submaps) narrows
-  // doors more than one submap does, so the robot is sent into rooms it then
-  // cannot plan out of. willow seed 1: 0.30 -> 0.50, 0.35 -> 0.63 (both end
-  // with thousands of frontier points no plan reaches); office seed 1: 0.30
-  // -> 1.000, 0.35 -> 0.995 with 19 goals the true world made unreachable.
-  // It must be at least the clearance the planner keeps in narrow passages.
-  double frontier_inflation_radius_m = 0.40;
+  // Replaces frontier.inflation_radius_m (the paper's 0.40 m, which replay
+  // and frontier-bench keep) for the frontier detector's reachability search.
+  // Walls in the SLAM map stand up to a cell proud of the true ones, and the
+  // fused map narrows doors further as scans of their posts add up, so a
+  // 0.85 m door measures about 0.75 m and 0.40 m seals it: willow-garage
+  // (seed 1) ended "complete" at coverage 0.70-0.74 with the rooms behind
+  // such doors seen only through them (its true map has 1033 m² reachable
+  // with 0.40 m of clearance, 687 m² with 0.45 m). Robot radius +
+  // traversability.narrow_margin_m (0.30 m) is the clearance the planner's
+  // narrow passages keep, and traversability.driven_width_m lets the robot
+  // leave every room it entered. Measured on seed 1 (office / willow-garage):
+  // 0.40 -> coverage 0.993 / 0.701, 0.35 -> 0.992 / 0.748, 0.30 -> 1.000 /
+  // 0.950. (Without the driven cells, 0.30 stranded the robot in a willow
+  // room: 0.50.) It must be at least robot radius + narrow margin.
+  double frontier_inflation_radius_m = 0.30;
   explore::GoalManagerOptions goals;
   // robot_radius_m is taken from the robot section (robot.radius_m).
   explore::TraversabilityOptions traversability;

@@ -85,6 +85,8 @@ class FrontierEngine {
   const std::vector<int>& LastRoundSubmaps(const std::string& name) const;
 
   int optimizations() const { return optimizations_; }
+  // True when every round is scored against "full" (see the constructor).
+  bool evaluating() const { return truth_ >= 0; }
   // Grid changes applied to the catalog (after deferral), and received.
   int grid_changes() const { return grid_changes_; }
   int grid_change_events() const { return grid_change_events_; }

@@ -29,14 +29,18 @@ nlohmann::json FrontierSummary(const frontier::FrontierEngine& engine) {
     s["queried_points"] = t.queried_points;
     s["queried_submaps"] = t.queried_submaps;
     s["time_ms"] = t.time_ms;
-    s["accuracy"] = t.confusion.accuracy();
-    s["precision"] = t.confusion.precision();
-    s["recall"] = t.confusion.recall();
+    // Without the reference nothing was scored: no confusion figures at all
+    // rather than the empty matrix's.
+    if (engine.evaluating()) {
+      s["accuracy"] = t.confusion.accuracy();
+      s["precision"] = t.confusion.precision();
+      s["recall"] = t.confusion.recall();
+      s["tp"] = t.confusion.tp;
+      s["fp"] = t.confusion.fp;
+      s["tn"] = t.confusion.tn;
+      s["fn"] = t.confusion.fn;
+    }
     s["P"] = std::isnan(t.performance_p) ? nlohmann::json() : nlohmann::json(t.performance_p);
-    s["tp"] = t.confusion.tp;
-    s["fp"] = t.confusion.fp;
-    s["tn"] = t.confusion.tn;
-    s["fn"] = t.confusion.fn;
     s["grid_change_queried_points"] = t.grid_change_queried_points;
     s["grid_change_time_ms"] = t.grid_change_time_ms;
     strategies[t.strategy] = s;
