@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "scout/common/error.h"
+#include "scout/report/coverage_curves.h"
 #include "scout/report/strategy_stats.h"
 #include "scout/report/svg_plot.h"
 
@@ -76,7 +77,11 @@ std::vector<Figure> ComparisonFigures(const std::vector<RunData>& runs) {
       }
       chart.series.push_back(std::move(series));
     }
-    figures.push_back({name, title + ", one bar per run.", RenderBarChart(chart)});
+    // A measure no run reports (accuracy of runs without the reference) is no figure.
+    const bool any = std::any_of(chart.series.begin(), chart.series.end(), [](const BarSeries& b) {
+      return std::any_of(b.values.begin(), b.values.end(), [](double v) { return !std::isnan(v); });
+    });
+    if (any) figures.push_back({name, title + ", one bar per run.", RenderBarChart(chart)});
   };
   if (!strategies.empty()) {
     bars("compare_p", "Performance P per strategy", "P (% fewer points than dfd)", false, "%.1f",
@@ -86,30 +91,23 @@ std::vector<Figure> ComparisonFigures(const std::vector<RunData>& runs) {
     bars("compare_time", "Update time per optimisation round", "time per round (ms)", false, "%.2f",
          [](const StrategyStats& s) { return s.time_per_round_ms; });
   }
-  const bool any_coverage =
-      std::any_of(runs.begin(), runs.end(), [](const RunData& r) { return !r.coverage.empty(); });
-  if (any_coverage) {
+  const CoverageLines lines = CoverageLinesOf(runs);
+  if (!lines.over_path.empty()) {
     LineChart path, time;
     path.title = "Coverage over path length";
     path.x_label = "path length (m)";
     time.title = "Coverage over simulated time";
     time.x_label = "simulated time (s)";
     path.y_label = time.y_label = "coverage (% of reachable free area)";
-    for (const RunData& run : runs) {
-      Series p{run.name, {}, {}}, t{run.name, {}, {}};
-      for (const CoverageSample& c : run.coverage) {
-        p.x.push_back(c.path_length_m);
-        p.y.push_back(100.0 * c.coverage);
-        t.x.push_back(c.sim_time_s);
-        t.y.push_back(100.0 * c.coverage);
-      }
-      path.series.push_back(std::move(p));
-      time.series.push_back(std::move(t));
-    }
-    figures.push_back({"compare_coverage_path", "Coverage over path length, one line per run.",
-                       RenderLineChart(path)});
-    figures.push_back({"compare_coverage_time", "Coverage over simulated time, one line per run.",
-                       RenderLineChart(time)});
+    path.series = lines.over_path;
+    time.series = lines.over_time;
+    const std::string per = lines.grouped
+                                ? ", one line per world and goal policy (the mean over its seeds)."
+                                : ", one line per run.";
+    figures.push_back(
+        {"compare_coverage_path", "Coverage over path length" + per, RenderLineChart(path)});
+    figures.push_back(
+        {"compare_coverage_time", "Coverage over simulated time" + per, RenderLineChart(time)});
   }
   return figures;
 }

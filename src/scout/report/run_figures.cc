@@ -1,6 +1,7 @@
 #include "scout/report/run_figures.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "scout/report/strategy_stats.h"
 #include "scout/report/svg_plot.h"
@@ -94,7 +95,8 @@ void AddFrontierFigures(const RunData& run, std::vector<Figure>* figures) {
   bars.series = {{"accuracy", {}}, {"precision", {}}, {"recall", {}}};
   for (const StrategyStats& s : StrategyStatsOf(run)) {
     // "full" is the reference: its bars are 100 % by definition.
-    if (s.strategy == "full") continue;
+    // Without the reference nothing was scored: no bars rather than NaN ones.
+    if (s.strategy == "full" || std::isnan(s.accuracy)) continue;
     bars.categories.push_back(s.strategy);
     bars.series[0].values.push_back(100.0 * s.accuracy);
     bars.series[1].values.push_back(100.0 * s.precision);

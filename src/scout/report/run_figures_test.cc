@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "scout/common/atomic_file.h"
 #include "scout/common/error.h"
 #include "scout/report/strategy_stats.h"
@@ -46,6 +48,27 @@ TEST(RunFigures, FrontierRunGivesThePaperFigures) {
   EXPECT_NE(bars.find(">99.72<"), std::string::npos);  // direct's accuracy from summary.json
   // Times are drawn in milliseconds: dfd's 1100 us is 1.1 ms.
   EXPECT_NE(FindFigure(figures, "update_time")->svg.find("update time (ms)"), std::string::npos);
+}
+
+TEST(RunFigures, RunsWithoutTheReferenceClaimNoAccuracy) {
+  // frontier.csv of a run without "full" (explore, frontier-bench
+  // --no-reference): every confusion count is zero.
+  RunData run;
+  run.name = "unscored";
+  for (int round = 0; round < 3; ++round) {
+    FrontierRound r;
+    r.round = round;
+    r.strategy = "exact";
+    r.queried_points = 10;
+    r.time_us = 100;
+    run.rounds.push_back(r);
+  }
+  const std::vector<StrategyStats> stats = StrategyStatsOf(run);
+  ASSERT_EQ(stats.size(), 1u);
+  EXPECT_TRUE(std::isnan(stats[0].accuracy));
+  EXPECT_TRUE(std::isnan(stats[0].precision));
+  EXPECT_TRUE(std::isnan(stats[0].recall));
+  for (const Figure& f : RunFigures(run)) EXPECT_NE(f.name, "accuracy");
 }
 
 TEST(RunFigures, StrategyStatsFromCsvWhenTheSummaryIsAbsent) {

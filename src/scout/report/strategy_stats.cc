@@ -26,9 +26,12 @@ std::vector<StrategyStats> FromRounds(const std::vector<FrontierRound>& rounds) 
       tp += r.tp, fp += r.fp, tn += r.tn, fn += r.fn;
     }
     s.time_per_round_ms = s.rounds > 0 ? s.time_ms / s.rounds : kNaN;
-    s.accuracy = Ratio(tp + tn, tp + fp + tn + fn);
-    s.precision = Ratio(tp, tp + fp);
-    s.recall = Ratio(tp, tp + fn);
+    // No answer scored in any round: the run had no reference ("full"), and
+    // an empty confusion matrix's ratios of 1 would claim a perfect score.
+    const bool scored = tp + fp + tn + fn > 0;
+    s.accuracy = scored ? Ratio(tp + tn, tp + fp + tn + fn) : kNaN;
+    s.precision = scored ? Ratio(tp, tp + fp) : kNaN;
+    s.recall = scored ? Ratio(tp, tp + fn) : kNaN;
     if (name == "dfd") dfd_points = s.queried_points;
     stats.push_back(s);
   }

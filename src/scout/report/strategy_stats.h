@@ -2,6 +2,7 @@
 #define SCOUT_REPORT_STRATEGY_STATS_H_
 
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -12,11 +13,14 @@ namespace scout::report {
 // The headline numbers of one update strategy over a run (ALGORITHMS §5).
 struct StrategyStats {
   std::string strategy;
-  int rounds = 0;                                        // optimisation rounds seen
-  int64_t queried_points = 0;                            // summed over rounds
-  double time_ms = 0.0;                                  // summed over rounds
-  double time_per_round_ms = 0;                          // NaN without rounds
-  double accuracy = 1.0, precision = 1.0, recall = 1.0;  // against "full"
+  int rounds = 0;                // optimisation rounds seen
+  int64_t queried_points = 0;    // summed over rounds
+  double time_ms = 0.0;          // summed over rounds
+  double time_per_round_ms = 0;  // NaN without rounds
+  // Against "full"; NaN when the run scored nothing (no reference).
+  double accuracy = std::numeric_limits<double>::quiet_NaN();
+  double precision = std::numeric_limits<double>::quiet_NaN();
+  double recall = std::numeric_limits<double>::quiet_NaN();
   double performance_p = 0.0;  // 1 - queried / queried(dfd); NaN without dfd
 };
 
