@@ -12,9 +12,10 @@ namespace scout::explore {
 //
 // A frontier point is a free cell next to unknown space, and unknown space
 // may hide a wall: a frontier that a grazing ray cut along the unseen side of
-// a desk lies on the desk's edge, where no robot can stand (office, seed 1:
-// every goal the true world made unreachable was such a point, 1-3 cm inside
-// furniture). The robot is therefore sent to the last point of the path from
+// a desk lies on the desk's edge, where no robot can stand. (Office seeds 1-5:
+// 1-2 issued navigation points per run lie where the robot's disc cannot get
+// within the goal tolerance; their stand-off targets: none.) The robot is
+// therefore sent to the last point of the path from
 // which its disc (radius robot_radius_m) covers known-free cells only, at
 // most 'max_back_off_m' of path before the goal; it sees the frontier from
 // there. Returns the path cut at that point; the path itself when its end
