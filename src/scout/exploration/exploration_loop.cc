@@ -165,9 +165,9 @@ void ExplorationLoop::RecordIssuedGoal(const Eigen::Vector2d& goal_map,
   // The robot drives to the goal relative to where it believes it is, so
   // that is where the goal lies in the true world: relative to its true
   // pose. (The start alignment world_from_map_ would misplace every goal by
-  // the map's drift at the time, which loop closures only later remove:
-  // office seed 1 had goals "inside" furniture the robot's own map placed
-  // 0.2 m farther on.)
+  // the map's drift at the time, which loop closures only later remove: in
+  // one office seed 1 run, all 6 targets it judged unreachable, "inside"
+  // furniture, were reachable judged this way.)
   const geometry::Rigid2d world_from_estimate = robot_.true_pose() * EstimatedPose().inverse();
   g.goal_world = world_from_estimate * goal_map;
   g.target_world = world_from_estimate * target_map;
