@@ -99,7 +99,6 @@ void GoalManager::Start() {
 void GoalManager::Stop() {
   state_ = ExploreState::kIdle;
   goal_.reset();
-  target_.reset();
   follower_.Clear();
 }
 
@@ -212,9 +211,7 @@ void GoalManager::BeginDriving(const Eigen::Vector2d& goal, const PlannedPath& p
       state == ExploreState::kDriving ? CutAtStandOff(*map_, path.points, options_.max_stand_off_m,
                                                       follower_.options().goal_tolerance_m)
                                       : path.points;
-  double length_m = 0.0;
-  for (size_t i = 1; i < points.size(); ++i) length_m += (points[i] - points[i - 1]).norm();
-  target_ = points.back();
+  const double length_m = PolylineLength(points);
   follower_.SetPath(std::move(points));
   if (new_goal || length_m < best_remaining_m_) best_remaining_m_ = length_m;
   last_replan_s_ = in.time_s;
@@ -233,7 +230,6 @@ void GoalManager::EndGoal(ExploreState next) {
   moving_since_.reset();
   backing_up_since_.reset();
   goal_.reset();
-  target_.reset();
   follower_.Clear();
   state_ = next;
   need_selection_ = true;
@@ -446,7 +442,7 @@ ExploreStatus GoalManager::Update(const ExploreInput& in) {
   }
   status.state = state_;
   if (goal_) status.goal = Resolve(*goal_, in.submaps);
-  status.target = target_;
+  if (follower_.has_path()) status.target = follower_.path().back();
   if (follower_.has_path()) status.path = follower_.path();
   status.blacklisted = failed_.Blacklisted(in.submaps);
   status.candidates = candidates_;

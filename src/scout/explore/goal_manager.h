@@ -235,8 +235,6 @@ class GoalManager {
   bool started_once_ = false;
   std::optional<AnchoredPoint> home_;
   std::optional<AnchoredPoint> goal_;
-  // The end of the path handed to the follower (global).
-  std::optional<Eigen::Vector2d> target_;
   std::unique_ptr<PlanningMap> map_;
   bool map_dirty_ = true;
   // PLANNING selects only after a map change or a goal ended, not every cycle.

@@ -29,13 +29,13 @@ double Octile(int dx, int dy) {
   return std::max(dx, dy) + (M_SQRT2 - 1.0) * std::min(dx, dy);
 }
 
+}  // namespace
+
 double PolylineLength(const std::vector<Eigen::Vector2d>& points) {
   double length = 0.0;
   for (size_t i = 1; i < points.size(); ++i) length += (points[i] - points[i - 1]).norm();
   return length;
 }
-
-}  // namespace
 
 std::optional<PlannedPath> PathPlanner::Plan(const PlanningMap& map, const Eigen::Vector2d& start,
                                              const Eigen::Vector2d& goal) const {

@@ -26,6 +26,9 @@ struct PathPlannerOptions {
 // Throws std::invalid_argument naming the key of a bad value.
 void Validate(const PathPlannerOptions& options);
 
+// Returns the summed length of the segments between consecutive points.
+double PolylineLength(const std::vector<Eigen::Vector2d>& points);
+
 struct PlannedPath {
   // World points: the start, the corners kept by shortcutting, and the goal
   // (or the centre of the cell the goal was snapped to).

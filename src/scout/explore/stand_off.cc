@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "scout/explore/path_planner.h"
+
 namespace scout::explore {
 
 bool DiscInKnownFree(const PlanningMap& map, const Eigen::Vector2d& p) {
@@ -28,9 +30,7 @@ std::vector<Eigen::Vector2d> CutAtStandOff(const PlanningMap& map,
                                            const std::vector<Eigen::Vector2d>& path,
                                            double max_back_off_m, double min_length_m) {
   if (path.size() < 2 || max_back_off_m <= 0.0 || DiscInKnownFree(map, path.back())) return path;
-  // Path length up to each vertex, to keep min_length_m of it.
-  std::vector<double> arc(path.size(), 0.0);
-  for (size_t i = 1; i < path.size(); ++i) arc[i] = arc[i - 1] + (path[i] - path[i - 1]).norm();
+  const double length_m = PolylineLength(path);  // min_length_m of it is kept
   const double step = 0.5 * map.limits().resolution();
   double back = 0.0;  // path walked back from the goal
   for (size_t i = path.size() - 1; i > 0; --i) {
@@ -40,7 +40,7 @@ std::vector<Eigen::Vector2d> CutAtStandOff(const PlanningMap& map,
     for (double s = step; s <= len + 1e-9; s += step) {
       const double from_goal = back + s;
       if (from_goal > max_back_off_m) return path;
-      if (arc.back() - from_goal < min_length_m) return path;
+      if (length_m - from_goal < min_length_m) return path;
       const Eigen::Vector2d p = b + (a - b) * (s / len);
       if (!DiscInKnownFree(map, p)) continue;
       std::vector<Eigen::Vector2d> cut(path.begin(), path.begin() + i);
