@@ -63,7 +63,7 @@ GroundTruth::GroundTruth(const grid::OccupancyMap& world, const std::string& wor
   const double r_cells = robot_radius_m / limits_.resolution();
   for (int64_t i = 0; i < limits_.num_cells(); ++i) {
     if (world.cells[i] == grid::CellState::kFree && d2[i] <= r_cells * r_cells + 1e-6) {
-      reachable_.push_back(i);
+      reachable_.push_back(limits_.CellOfFlatIndex(i));
     }
   }
 }
@@ -97,8 +97,8 @@ double GroundTruth::MappedFreeM2(const grid::OccupancyMap& map,
   if (map.limits.num_cells() == 0) return 0.0;
   const geometry::Rigid2d map_from_world = world_from_map.inverse();
   int64_t mapped = 0;
-  for (const int64_t flat : reachable_) {
-    const Eigen::Vector2d p = map_from_world * limits_.CellCenter(limits_.CellOfFlatIndex(flat));
+  for (const grid::CellIndex& cell : reachable_) {
+    const Eigen::Vector2d p = map_from_world * limits_.CellCenter(cell);
     mapped += map.at(map.limits.CellContaining(p)) == grid::CellState::kFree;
   }
   return mapped * cell_area_m2_;
@@ -126,7 +126,7 @@ bool GroundTruth::DiscCanReach(const Eigen::Vector2d& from, const Eigen::Vector2
 
 std::vector<uint8_t> GroundTruth::ReachableMask() const {
   std::vector<uint8_t> mask(limits_.num_cells(), 0);
-  for (const int64_t flat : reachable_) mask[flat] = 1;
+  for (const grid::CellIndex& c : reachable_) mask[limits_.FlatIndex(c)] = 1;
   return mask;
 }
 

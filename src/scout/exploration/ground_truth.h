@@ -53,7 +53,7 @@ class GroundTruth {
 
   grid::MapLimits limits_;
   double cell_area_m2_ = 0.0;
-  std::vector<int64_t> reachable_;  // flat indices of reachable free cells
+  std::vector<grid::CellIndex> reachable_;  // the reachable free cells, row-major
   std::vector<int32_t> disc_component_;
 };
 

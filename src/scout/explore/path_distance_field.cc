@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <utility>
 
 namespace scout::explore {
@@ -10,24 +11,25 @@ PathDistanceField::PathDistanceField(const PlanningMap& map, const Eigen::Vector
     : PathDistanceField(map, StartRegion(map, robot)) {}
 
 PathDistanceField::PathDistanceField(const PlanningMap& map, const StartRegion& start)
-    : limits_(map.limits()), distance_m_(limits_.num_cells(), kUnreachable) {
+    : limits_(map.limits()),
+      distance_m_(static_cast<size_t>(padded_width()) * (limits_.height() + 2), kUnreachable) {
   if (start.empty()) return;
   const float res = static_cast<float>(limits_.resolution());
 
-  // Dijkstra in cell units over a copy of the traversability mask padded by
-  // one closed cell, so the inner loop needs no bounds checks.
+  // Dijkstra in cell units over the traversability codes padded by one
+  // closed cell; kSettled marks cells whose distance is final.
   const int w = limits_.width(), h = limits_.height();
-  const int pw = w + 2;
-  std::vector<uint8_t> open(static_cast<size_t>(pw) * (h + 2), 0);
-  std::vector<float> factor(open.size(), 1.0f);
+  const int64_t pw = padded_width();
+  constexpr uint8_t kSettled = 0x80;
+  std::vector<uint8_t> code(distance_m_.size(), 0);
+  const std::vector<uint8_t>& codes = map.traversability_codes();
   for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) {
-      const int64_t flat = int64_t{y} * w + x;
-      open[(y + 1) * pw + x + 1] = map.traversable(flat);
-      factor[(y + 1) * pw + x + 1] = map.StepFactor(flat);
-    }
+    std::memcpy(&code[(y + 1) * pw + 1], &codes[int64_t{y} * w], w);
   }
-  std::vector<float> d(open.size(), kUnreachable);
+  // Entering a cell costs the step length times its factor (by code).
+  static_assert(PlanningMap::kNarrow == 2);
+  const float factor_of[3] = {0.0f, 1.0f, static_cast<float>(map.options().narrow_cost_factor)};
+  float* const d = distance_m_.data();
   const int64_t step[8] = {1, -1, pw, -pw, pw + 1, -pw + 1, pw - 1, -pw - 1};
   // For a diagonal step, the two orthogonal cells it passes between.
   const int64_t side_a[8] = {0, 0, 0, 0, 1, 1, -1, -1};
@@ -46,10 +48,9 @@ PathDistanceField::PathDistanceField(const PlanningMap& map, const StartRegion& 
   const int64_t ring =
       static_cast<int64_t>(std::ceil(farthest_seed + float(M_SQRT2) * map.MaxStepFactor())) + 2;
   std::vector<std::vector<uint32_t>> bucket(ring);
-  std::vector<uint8_t> done(open.size(), 0);
   int64_t pending = 0;
   for (const StartSeed& seed : start.seeds()) {
-    const uint32_t s = static_cast<uint32_t>((seed.cell.y + 1) * pw + seed.cell.x + 1);
+    const uint32_t s = static_cast<uint32_t>(Padded(seed.cell));
     const float ds = seed.distance_m / res;
     if (ds < d[s]) {
       d[s] = ds;
@@ -57,35 +58,35 @@ PathDistanceField::PathDistanceField(const PlanningMap& map, const StartRegion& 
       ++pending;
     }
   }
-  for (int64_t k = 0; pending > 0; ++k) {
-    std::vector<uint32_t>& current = bucket[k % ring];
+  // slot == k % ring, kept without a division: a pushed distance lies in
+  // [k + 1, k + ring), so its slot is slot + offset, wrapped once.
+  for (int64_t k = 0, slot = 0; pending > 0; ++k, slot = slot + 1 == ring ? 0 : slot + 1) {
+    std::vector<uint32_t>& current = bucket[slot];
     for (size_t i = 0; i < current.size(); ++i) {
       const uint32_t u = current[i];
       --pending;
-      if (done[u]) continue;
-      done[u] = 1;
+      if (code[u] & kSettled) continue;
+      code[u] |= kSettled;
       const float du = d[u];
       for (int n = 0; n < 8; ++n) {
         const int64_t v = u + step[n];
-        if (!open[v] || done[v]) continue;
-        if (n >= 4 && !(open[u + side_a[n]] && open[u + side_b[n]])) continue;
-        const float dv = du + cost[n] * factor[v];
+        const uint8_t cv = code[v];
+        if (cv == 0 || (cv & kSettled)) continue;
+        if (n >= 4 && !((code[u + side_a[n]] & 3) && (code[u + side_b[n]] & 3))) continue;
+        const float dv = du + cost[n] * factor_of[cv];
         if (dv < d[v]) {
           d[v] = dv;
-          bucket[static_cast<int64_t>(dv) % ring].push_back(static_cast<uint32_t>(v));
+          int64_t to = slot + (static_cast<int64_t>(dv) - k);
+          if (to >= ring) to -= ring;
+          bucket[to].push_back(static_cast<uint32_t>(v));
           ++pending;
         }
       }
     }
     current.clear();
   }
+  for (float& di : distance_m_) di *= res;  // the infinite stay infinite
   float nearest = kUnreachable;
-  for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) {
-      const float di = d[(y + 1) * pw + x + 1];
-      if (std::isfinite(di)) distance_m_[int64_t{y} * w + x] = di * res;
-    }
-  }
   for (const StartSeed& seed : start.seeds()) {
     if (seed.distance_m < nearest) nearest = seed.distance_m, start_ = seed.cell;
   }
@@ -103,7 +104,7 @@ std::optional<PathDistanceField::Reached> PathDistanceField::NearestReached(
       const grid::CellIndex c{x, y};
       if (!limits_.Contains(c)) continue;
       if (!(c == centre) && (limits_.CellCenter(c) - p).squaredNorm() > r2) continue;
-      const float dist = distance_m_[limits_.FlatIndex(c)];
+      const float dist = distance_m_[Padded(c)];
       if (std::isfinite(dist) && (!best || dist < best->distance_m)) best = Reached{dist, c};
     }
   }

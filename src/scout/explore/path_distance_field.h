@@ -27,10 +27,12 @@ class PathDistanceField {
   PathDistanceField(const PlanningMap& map, const StartRegion& start);
 
   // Returns the path distance in metres to the cell (kUnreachable if none).
-  float at(int64_t flat) const { return distance_m_[flat]; }
+  float at(int64_t flat) const {
+    return distance_m_[flat + 2 * (flat / limits_.width()) + padded_width() + 1];
+  }
   // As above; kUnreachable outside the map.
   float at(const grid::CellIndex& cell) const {
-    return limits_.Contains(cell) ? distance_m_[limits_.FlatIndex(cell)] : kUnreachable;
+    return limits_.Contains(cell) ? distance_m_[Padded(cell)] : kUnreachable;
   }
   // The seed cell nearest the robot by path, if any.
   const std::optional<grid::CellIndex>& start() const { return start_; }
@@ -45,8 +47,15 @@ class PathDistanceField {
   std::optional<Reached> NearestReached(const Eigen::Vector2d& p, double radius_m) const;
 
  private:
+  int64_t padded_width() const { return limits_.width() + 2; }
+  int64_t Padded(const grid::CellIndex& c) const {
+    return (int64_t{c.y} + 1) * padded_width() + c.x + 1;
+  }
+
   grid::MapLimits limits_;
   std::optional<grid::CellIndex> start_;
+  // The grid padded by one unreachable cell on every side, so the search's
+  // inner loop needs no bounds checks (index with Padded).
   std::vector<float> distance_m_;
 };
 

@@ -32,17 +32,20 @@ PlanningMap::PlanningMap(const grid::OccupancyMap& map, const TraversabilityOpti
   }
   // The same inflation as the frontier detector's, so a frontier point that
   // WFD reached is not blocked here by a different rounding.
-  blocked_ = grid::InflateOccupied(states_, limits_, options_.inflation_radius_m());
-  std::vector<uint8_t> tight;
-  if (options_.narrow_margin_m < options_.safety_margin_m) {
-    tight =
-        grid::InflateOccupied(states_, limits_, options_.robot_radius_m + options_.narrow_margin_m);
-  }
+  // Level 1: within the inflation radius (blocked); level 2: also within the
+  // narrow passages' clearance (no passage either).
+  const bool narrow = options_.narrow_margin_m < options_.safety_margin_m;
+  std::vector<double> radii = {options_.inflation_radius_m()};
+  if (narrow) radii.push_back(options_.robot_radius_m + options_.narrow_margin_m);
+  blocked_ = grid::InflationLevels(states_, limits_, radii);
   traversable_.resize(states_.size());
   for (size_t i = 0; i < states_.size(); ++i) {
     const bool passable = states_[i] == grid::CellState::kFree ||
                           (options_.unknown_traversable && states_[i] == grid::CellState::kUnknown);
-    traversable_[i] = !passable ? 0 : !blocked_[i] ? 1 : !tight.empty() && !tight[i] ? kNarrow : 0;
+    traversable_[i] = !passable                    ? 0
+                      : blocked_[i] == 0           ? 1
+                      : narrow && blocked_[i] == 1 ? kNarrow
+                                                   : 0;
     has_narrow_ = has_narrow_ || traversable_[i] == kNarrow;
   }
   if (with_clearance) {
@@ -59,14 +62,16 @@ PlanningMap::PlanningMap(const grid::OccupancyMap& map, const TraversabilityOpti
 void PlanningMap::AllowDriven(const std::vector<Eigen::Vector2d>& trajectory) {
   const double width = options_.driven_width_m;
   if (width <= 0.0) return;
+  // Runs over the whole trajectory at every map update: visit the cells in
+  // place rather than collecting them.
   const auto allow = [&](const Eigen::Vector2d& p) {
-    for (const grid::CellIndex& c : CellsWithin(limits_, p, width)) {
+    ForEachCellWithin(limits_, p, width, [&](const grid::CellIndex& c) {
       const int64_t i = limits_.FlatIndex(c);
       if (states_[i] == grid::CellState::kFree && traversable_[i] == 0) {
         traversable_[i] = kNarrow;
         has_narrow_ = true;
       }
-    }
+    });
   };
   const double step = 0.5 * limits_.resolution();
   for (size_t i = 0; i < trajectory.size(); ++i) {
@@ -89,16 +94,7 @@ bool PlanningMap::StepAllowed(const grid::CellIndex& from, int k) const {
 std::vector<grid::CellIndex> CellsWithin(const grid::MapLimits& limits, const Eigen::Vector2d& p,
                                          double radius_m) {
   std::vector<grid::CellIndex> cells;
-  const grid::CellIndex centre = limits.CellContaining(p);
-  const int r = static_cast<int>(std::ceil(radius_m / limits.resolution())) + 1;
-  const double r2 = radius_m * radius_m;
-  for (int y = centre.y - r; y <= centre.y + r; ++y) {
-    for (int x = centre.x - r; x <= centre.x + r; ++x) {
-      const grid::CellIndex c{x, y};
-      if (!limits.Contains(c)) continue;
-      if (c == centre || (limits.CellCenter(c) - p).squaredNorm() <= r2) cells.push_back(c);
-    }
-  }
+  ForEachCellWithin(limits, p, radius_m, [&](const grid::CellIndex& c) { cells.push_back(c); });
   return cells;
 }
 

@@ -63,6 +63,22 @@ void Validate(const TraversabilityOptions& options);
 // (the cell containing 'p' always included when inside), in row-major order.
 std::vector<grid::CellIndex> CellsWithin(const grid::MapLimits& limits, const Eigen::Vector2d& p,
                                          double radius_m);
+// Calls visit(CellIndex) for the cells CellsWithin returns, in the same order,
+// without building the list (for loops over many points).
+template <typename Visit>
+void ForEachCellWithin(const grid::MapLimits& limits, const Eigen::Vector2d& p, double radius_m,
+                       Visit&& visit) {
+  const grid::CellIndex centre = limits.CellContaining(p);
+  const int r = static_cast<int>(std::ceil(radius_m / limits.resolution())) + 1;
+  const double r2 = radius_m * radius_m;
+  for (int y = centre.y - r; y <= centre.y + r; ++y) {
+    for (int x = centre.x - r; x <= centre.x + r; ++x) {
+      const grid::CellIndex c{x, y};
+      if (!limits.Contains(c)) continue;
+      if (c == centre || (limits.CellCenter(c) - p).squaredNorm() <= r2) visit(c);
+    }
+  }
+}
 
 // 8-neighbour offsets; the first four are the orthogonal ones.
 inline constexpr std::array<std::array<int, 2>, 8> kNeighbourOffsets = {
@@ -88,6 +104,10 @@ class PlanningMap {
   bool traversable(int64_t flat) const { return traversable_[flat] != 0; }
   // True when the cell is traversable only as a narrow passage.
   bool narrow(int64_t flat) const { return traversable_[flat] == kNarrow; }
+  // Per cell, row-major: 0 not traversable, 1 traversable, kNarrow a narrow
+  // passage (for searches that scan every cell).
+  static constexpr uint8_t kNarrow = 2;
+  const std::vector<uint8_t>& traversability_codes() const { return traversable_; }
   // The cost of entering a traversable cell, per unit of step length.
   float StepFactor(int64_t flat) const {
     return traversable_[flat] == kNarrow ? static_cast<float>(options_.narrow_cost_factor) : 1.0f;
@@ -136,11 +156,9 @@ class PlanningMap {
   grid::MapLimits limits_;
   TraversabilityOptions options_;
   std::vector<grid::CellState> states_;
-  static constexpr uint8_t kNarrow = 2;
   bool has_narrow_ = false;
-  std::vector<uint8_t> blocked_;
-  // 0: not traversable, 1: traversable, kNarrow: a narrow passage.
-  std::vector<uint8_t> traversable_;
+  std::vector<uint8_t> blocked_;      // inflation levels (grid::InflationLevels)
+  std::vector<uint8_t> traversable_;  // traversability_codes()
   std::vector<float> clearance_m_;
 };
 

@@ -17,6 +17,13 @@ namespace scout::grid {
 std::vector<uint8_t> InflateOccupied(const std::vector<CellState>& states, const MapLimits& limits,
                                      double radius_m);
 
+// As InflateOccupied for several radii at once (sharing the column pass):
+// each cell's value is the number of radii within which it lies, so with
+// radii sorted from largest to smallest, level >= k + 1 means blocked by
+// radius k. Throws std::invalid_argument for no radii or more than 255.
+std::vector<uint8_t> InflationLevels(const std::vector<CellState>& states, const MapLimits& limits,
+                                     const std::vector<double>& radii_m);
+
 }  // namespace scout::grid
 
 #endif  // SCOUT_GRID_INFLATION_H_

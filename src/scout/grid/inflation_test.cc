@@ -86,5 +86,28 @@ RC_GTEST_PROP(InflateOccupied, EqualsBruteForceOnRandomMaps, ()) {
   RC_ASSERT(InflateOccupied(states, limits, radius_m) == BruteForce(states, limits, radius_m));
 }
 
+RC_GTEST_PROP(InflationLevels, CountsTheRadiiEachCellLiesWithin, ()) {
+  const int width = *rc::gen::inRange(1, 16);
+  const int height = *rc::gen::inRange(1, 16);
+  const MapLimits limits(0.1, {0.0, 0.0}, width, height);
+  std::vector<CellState> states(limits.num_cells());
+  for (auto& s : states) {
+    s = *rc::gen::element(CellState::kFree, CellState::kUnknown, CellState::kOccupied);
+  }
+  const std::vector<double> radii = {*rc::gen::inRange(0, 40) * 0.05,
+                                     *rc::gen::inRange(0, 40) * 0.05};
+  std::vector<uint8_t> expected(states.size(), 0);
+  for (const double r : radii) {
+    const std::vector<uint8_t> one = BruteForce(states, limits, r);
+    for (size_t i = 0; i < one.size(); ++i) expected[i] += one[i];
+  }
+  RC_ASSERT(InflationLevels(states, limits, radii) == expected);
+}
+
+TEST(InflationLevels, RejectsNoRadii) {
+  const MapLimits limits(0.05, {0, 0}, 2, 2);
+  EXPECT_THROW(InflationLevels(std::vector<CellState>(4), limits, {}), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace scout::grid

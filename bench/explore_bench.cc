@@ -1,0 +1,88 @@
+// The explore loop's per-cycle map work on the generated office world's true
+// map (the largest map an office run plans on): the planning map, the path
+// distance field every goal selection builds, and the coverage measurement
+// done at every map update. These dominate `scout explore`'s "goals" and
+// "map_fusion" wall time (summary.json wall_time_breakdown_s).
+
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <vector>
+
+#include "scout/exploration/exploration_options.h"
+#include "scout/exploration/ground_truth.h"
+#include "scout/explore/path_distance_field.h"
+#include "scout/explore/planning_map.h"
+#include "scout/sim/make_world.h"
+
+namespace {
+
+using scout::exploration::ExplorationOptions;
+using scout::exploration::GroundTruth;
+using scout::exploration::PlanningTraversability;
+using scout::explore::PathDistanceField;
+using scout::explore::PlanningMap;
+
+struct Office {
+  scout::sim::World world = scout::sim::MakeWorld("office", 1);
+  ExplorationOptions options;
+  // A stand-in for a whole run's trajectory: back and forth across the map in
+  // rows 2 m apart, a node every 0.2 m (about 540 m, an office run's length).
+  std::vector<Eigen::Vector2d> Trajectory() const {
+    const scout::geometry::Box2d box = world.map.limits.Bounds();
+    std::vector<Eigen::Vector2d> t;
+    bool leftwards = false;
+    for (double y = box.min.y() + 1.0; y < box.max.y() - 1.0; y += 2.0) {
+      for (double s = 0.0; s <= (box.max.x() - box.min.x()) - 2.0; s += 0.2) {
+        t.emplace_back(leftwards ? box.max.x() - 1.0 - s : box.min.x() + 1.0 + s, y);
+      }
+      leftwards = !leftwards;
+    }
+    return t;
+  }
+};
+
+const Office& TheOffice() {
+  static const Office office;
+  return office;
+}
+
+void BM_PlanningMap(benchmark::State& state) {
+  const Office& o = TheOffice();
+  const auto trav = PlanningTraversability(o.options);
+  const std::vector<Eigen::Vector2d> driven = o.Trajectory();
+  for (auto _ : state) {
+    PlanningMap map(o.world.map, trav, o.options.explore.planner.clearance_weight > 0.0);
+    map.AllowDriven(driven);
+    benchmark::DoNotOptimize(map.traversable(0));
+  }
+}
+BENCHMARK(BM_PlanningMap)->Unit(benchmark::kMillisecond);
+
+void BM_PathDistanceField(benchmark::State& state) {
+  const Office& o = TheOffice();
+  const PlanningMap map(o.world.map, PlanningTraversability(o.options));
+  int64_t reached = 0;
+  for (auto _ : state) {
+    const PathDistanceField field(map, o.world.start);
+    benchmark::DoNotOptimize(field.at(int64_t{0}));
+    reached = 0;
+    for (int64_t i = 0; i < map.limits().num_cells(); ++i) reached += std::isfinite(field.at(i));
+  }
+  state.counters["reached_cells"] = static_cast<double>(reached);
+}
+BENCHMARK(BM_PathDistanceField)->Unit(benchmark::kMillisecond);
+
+void BM_MappedFreeM2(benchmark::State& state) {
+  const Office& o = TheOffice();
+  const GroundTruth truth(o.world.map, "office", o.world.start, PlanningTraversability(o.options),
+                          o.options.robot.robot.radius_m);
+  // A small drift, as between an estimated map and the world.
+  const scout::geometry::Rigid2d world_from_map(0.07, -0.04, 0.01);
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(truth.MappedFreeM2(o.world.map, world_from_map));
+  }
+}
+BENCHMARK(BM_MappedFreeM2)->Unit(benchmark::kMillisecond);
+
+}  // namespace
