@@ -115,8 +115,11 @@ nlohmann::json Summary(const ExploreArgs& args, const exploration::ExplorationLo
                 {"escapes", r.counters.escapes},
                 {"recoveries", r.counters.recoveries},
                 {"guard_stops", r.counters.guard_stops},
+                {"guard_steers", r.counters.guard_steers},
+                {"passages_closed", r.counters.passages_closed},
                 {"frontier_left", r.frontier_left},
-                {"reachable_frontier_left", r.reachable_frontier_left}};
+                {"reachable_frontier_left", r.reachable_frontier_left},
+                {"visited_frontier_left", r.visited_frontier_left}};
   // Where each goal the true world made unreachable was, and the robot then
   // (world frame), so they can be found on the map.
   nlohmann::json unreachable = nlohmann::json::array();
@@ -260,7 +263,8 @@ int RunExplore(const ExploreArgs& args) {
             << " failed, " << result.unreachable_goals << " unreachable in truth; collisions "
             << result.collisions << "; ATE RMSE " << std::setprecision(3) << ate_rmse_m << " m; "
             << result.frontier_left << " frontier points left unreached ("
-            << result.reachable_frontier_left << " reachable)\n"
+            << result.reachable_frontier_left << " reachable, never visited; "
+            << result.visited_frontier_left << " reachable near reached goals)\n"
             << "outputs: " << (out.path() / "summary.json").string()
             << ", map.yaml, map.pgm, map.png, trajectory.tum, truth.tum, frontier.csv, "
                "coverage.csv\n";

@@ -189,7 +189,8 @@ std::optional<Termination> ExplorationLoop::CheckTermination(
     // (ALGORITHMS section 6). Frontier points no plan on the fused map reaches
     // may remain (reported as frontier_left); more reachable frontier than
     // complete_max_reachable_frontier_m means the policy gave up on it (e.g.
-    // its goals failed): not complete.
+    // its goals failed): not complete. Frontier near a goal the robot
+    // reached does not count: it went there and the frontier stayed.
     const double reachable_m =
         status.reachable_frontier_left * options_.slam.local.submaps.resolution_m;
     return reachable_m > options_.explore.complete_max_reachable_frontier_m
@@ -257,6 +258,7 @@ ExplorationResult ExplorationLoop::Run(const ProgressCallback& progress,
       result_.returned_home = status.returned_home;
       result_.frontier_left = status.frontier_left;
       result_.reachable_frontier_left = status.reachable_frontier_left;
+      result_.visited_frontier_left = status.visited_frontier_left;
       break;
     }
     const frontier::Stopwatch watch;

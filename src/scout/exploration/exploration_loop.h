@@ -91,7 +91,10 @@ struct ExplorationResult {
   bool returned_home = false;
   // Frontier points left when the goal manager finished (0 when complete).
   int frontier_left = 0;
-  int reachable_frontier_left = 0;  // of frontier_left, reachable by a plan
+  // Of frontier_left, reachable by a plan and never visited, and reachable
+  // but near a goal the robot reached (ExploreStatus).
+  int reachable_frontier_left = 0;
+  int visited_frontier_left = 0;
   std::vector<CoverageSample> coverage_samples;
   std::vector<IssuedGoal> goals;
   // Where each collision began (true position, world frame) and when.

@@ -46,21 +46,63 @@ TEST(CollisionGuardTest, FreeWayAndBackwardAndTurningCommandsPassUnchanged) {
 }
 
 TEST(CollisionGuardTest, SlowsDownAndStopsBeforeAPostAhead) {
+  CollisionGuardOptions o;
+  o.steer_max_curvature_per_m = 0.0;  // only slowing down
   const std::vector<Eigen::Vector2d> post = {{1.0, 0.05}};
-  const GuardedCommand near = GuardCommand({0.5, 0.0}, post, kRadius, {});
+  const GuardedCommand near = GuardCommand({0.5, 0.0}, post, kRadius, o);
   // 1 m away, 0.77 m of free travel at most: 0.5 m/s over 1 s fits.
   EXPECT_FALSE(near.limited);
-  const GuardedCommand closer = GuardCommand({0.5, 0.0}, {{0.5, 0.05}}, kRadius, {});
+  const GuardedCommand closer = GuardCommand({0.5, 0.0}, {{0.5, 0.05}}, kRadius, o);
   EXPECT_TRUE(closer.limited);
   EXPECT_FALSE(closer.stopped);
   EXPECT_LT(closer.command.linear_mps, 0.5);
-  const GuardedCommand touching = GuardCommand({0.5, 0.3}, {{0.235, 0.0}}, kRadius, {});
+  const GuardedCommand touching = GuardCommand({0.5, 0.3}, {{0.235, 0.0}}, kRadius, o);
   EXPECT_TRUE(touching.stopped);
   EXPECT_EQ(touching.command.linear_mps, 0.0);
   EXPECT_DOUBLE_EQ(touching.command.angular_radps, 0.3);  // still turns
   // Driven to the end, it never comes within the clearance.
-  CollisionGuardOptions o;
   EXPECT_GE(ClosestApproach({0.5, 0.0}, post, o, 5.0), kRadius + o.clearance_m - 0.011);
+}
+
+TEST(CollisionGuardTest, SteersTheNearestClearArcAwayFromAPost) {
+  // A post 0.5 m ahead, slightly left: the straight arc would be slowed.
+  const GuardedCommand g = GuardCommand({0.5, 0.0}, {{0.5, 0.05}}, kRadius, {}, 1.0);
+  EXPECT_TRUE(g.steered);
+  EXPECT_FALSE(g.limited);
+  EXPECT_LT(g.command.angular_radps, 0.0);  // to the right, away from it
+  EXPECT_LE(std::abs(g.command.angular_radps), 1.0 + 1e-12);
+  // Within the curvature limit: at most 2 / m away from the commanded arc.
+  EXPECT_LE(std::abs(g.command.angular_radps / g.command.linear_mps), 2.0 + 1e-9);
+  // The steered arc itself is clear: guarding it again changes nothing.
+  const GuardedCommand again = GuardCommand(g.command, {{0.5, 0.05}}, kRadius, {}, 1.0);
+  EXPECT_FALSE(again.steered || again.limited);
+}
+
+TEST(CollisionGuardTest, SlowsDownWhenNoNearbyArcIsClear) {
+  // A wall across the way 0.4 m ahead: no arc within 2 / m clears it.
+  std::vector<Eigen::Vector2d> wall;
+  for (double y = -2.0; y <= 2.0; y += 0.05) wall.push_back({0.4, y});
+  const GuardedCommand g = GuardCommand({0.5, 0.0}, wall, kRadius, {}, 1.0);
+  EXPECT_FALSE(g.steered);
+  EXPECT_TRUE(g.limited);
+  EXPECT_LT(g.command.linear_mps, 0.5);
+}
+
+TEST(CollisionGuardTest, SlidesAlongAWallItConvergesOn) {
+  // A wall 0.26 m to the right, turning toward the path's heading by 5
+  // degrees: without steering the robot stops against it.
+  std::vector<Eigen::Vector2d> wall;
+  const double a = 5.0 * M_PI / 180.0;
+  for (double s = -1.0; s <= 3.0; s += 0.05) {
+    wall.push_back({s * std::cos(a), -0.26 + s * std::sin(a)});
+  }
+  CollisionGuardOptions off;
+  off.steer_max_curvature_per_m = 0.0;
+  EXPECT_TRUE(GuardCommand({0.5, 0.0}, wall, kRadius, off).limited);
+  const GuardedCommand g = GuardCommand({0.5, 0.0}, wall, kRadius, {}, 1.0);
+  EXPECT_TRUE(g.steered);
+  EXPECT_GT(g.command.angular_radps, 0.0);  // away from the wall
+  EXPECT_NEAR(g.command.linear_mps, 0.5, 1e-12);
 }
 
 TEST(CollisionGuardTest, LetsTheRobotPassBesideAWall) {
@@ -83,6 +125,7 @@ RC_GTEST_PROP(CollisionGuardProperty, NeverDrivesIntoAnObstacle, ()) {
   const VelocityCommand command{*rc::gen::inRange(1, 51) * 0.01,
                                 *rc::gen::inRange(-100, 101) * 0.01};
   CollisionGuardOptions o;
+  o.steer_max_curvature_per_m = *rc::gen::element(0.0, 2.0, 4.0);
   const double closest = ClosestApproach(command, obstacles, o, 3.0);
   RC_ASSERT(closest >= kRadius);
 }

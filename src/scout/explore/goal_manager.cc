@@ -24,6 +24,7 @@ void Validate(const GoalManagerOptions& o) {
   CheckAtLeast(g, "back_up_distance_m", o.back_up_distance_m, 0.0);
   CheckAtLeast(g, "back_up_speed_mps", o.back_up_speed_mps, 0.0);
   CheckAtLeast(g, "back_up_timeout_s", o.back_up_timeout_s, 0.0);
+  CheckAtLeast(g, "close_stuck_passage_radius_m", o.close_stuck_passage_radius_m, 0.0);
   CheckAtLeast(g, "goal_frontier_radius_m", o.goal_frontier_radius_m, 0.0);
   CheckAtLeast(g, "goal_switch_margin", o.goal_switch_margin, 0.0);
   CheckAtLeast(g, "goal_match_radius_m", o.goal_match_radius_m, 0.0);
@@ -82,7 +83,8 @@ GoalManager::GoalManager(const GoalManagerOptions& options,
       follower_(follower),
       policy_(std::move(policy)),
       failed_(options.failed_goals),
-      visited_(options.failed_goals) {
+      visited_(options.failed_goals),
+      stuck_places_(options.failed_goals) {
   Validate(options_);
   Validate(traversability_);
   if (!policy_) throw std::invalid_argument("GoalManager: no goal policy");
@@ -116,6 +118,12 @@ void GoalManager::RefreshMap(const ExploreInput& in) {
   if (map_ && !map_dirty_) return;
   map_ = std::make_unique<PlanningMap>(*in.map, traversability_,
                                        planner_.options().clearance_weight > 0.0);
+  // Stuck places close their passages first; the cells the robot has driven
+  // over open again, so closing never seals it into a room it entered.
+  stuck_places_.RetryChangedGoals(*map_, in.submaps);
+  for (const Eigen::Vector2d& p : stuck_places_.Blacklisted(in.submaps)) {
+    map_->CloseNarrow(p, options_.close_stuck_passage_radius_m);
+  }
   if (in.driven) map_->AllowDriven(*in.driven);
   map_dirty_ = false;
   counters_.goals_retried += failed_.RetryChangedGoals(*map_, in.submaps);
@@ -270,13 +278,14 @@ void GoalManager::FinishOrGoHome(const ExploreInput& in, ExploreStatus& status) 
       return;
     }
   }
-  reachable_frontier_left_ = 0;
+  reachable_frontier_left_ = visited_frontier_left_ = 0;
   if (frontier_left_ > 0) {
     const StartRegion start(*map_, in.robot_pose.translation());
     const PathDistanceField field(*map_, start);
+    const std::vector<Eigen::Vector2d> visited = visited_.Blacklisted(in.submaps);
     for (const Eigen::Vector2d& p : FrontierInBoundary(*in.frontier)) {
-      reachable_frontier_left_ +=
-          field.NearestReached(p, map_->options().goal_snap_radius_m).has_value();
+      if (!field.NearestReached(p, map_->options().goal_snap_radius_m)) continue;
+      ++(visited_.IsNear(p, visited) ? visited_frontier_left_ : reachable_frontier_left_);
     }
   }
   EndGoal(ExploreState::kFinished);
@@ -363,6 +372,13 @@ void GoalManager::Drive(const ExploreInput& in, ExploreStatus& status) {
         in.time_s - since_s >= options_.back_up_timeout_s) {
       backing_up_since_.reset();
       moving_since_.reset();
+      if (options_.close_stuck_passage_radius_m > 0.0) {
+        // The passage closes with the next planning map (built by the
+        // selection FailGoal leads to).
+        stuck_places_.RecordFailure(from, in.submaps, *map_);
+        ++counters_.passages_closed;
+        map_dirty_ = true;
+      }
       FailGoal(in);
       return;
     }
@@ -398,8 +414,10 @@ void GoalManager::Drive(const ExploreInput& in, ExploreStatus& status) {
   const bool forward = status.command.linear_mps > 0.0;
   if (in.obstacles) {
     const GuardedCommand g =
-        GuardCommand(status.command, *in.obstacles, map_->options().robot_radius_m, options_.guard);
+        GuardCommand(status.command, *in.obstacles, map_->options().robot_radius_m, options_.guard,
+                     follower_.options().max_angular_speed_radps);
     status.command = g.command;
+    counters_.guard_steers += g.steered;
     if (g.stopped && !guard_stopped_) ++counters_.guard_stops;
     guard_stopped_ = g.stopped;
   }
@@ -448,6 +466,7 @@ ExploreStatus GoalManager::Update(const ExploreInput& in) {
   status.candidates = candidates_;
   status.frontier_left = frontier_left_;
   status.reachable_frontier_left = reachable_frontier_left_;
+  status.visited_frontier_left = visited_frontier_left_;
   status.returned_home = returned_home_;
   return status;
 }

@@ -198,6 +198,32 @@ TEST(GoalManagerTest, ReachedGoalIsCountedAndTheNextOneChosen) {
   EXPECT_GT((*next.goal - *first.goal).norm(), 0.5);
 }
 
+TEST(GoalManagerTest, FrontierThatStaysWhereTheRobotWentCountsAsVisitedNotGivenUp) {
+  // The map never changes: every goal the robot reaches leaves its frontier
+  // in place. When no goal is left, that frontier is reported as visited
+  // (the robot went and looked), not as reachable frontier given up on.
+  Room room;
+  GoalManagerOptions o = NoStuckRecovery();
+  GoalManager gm = MakeManager(o);
+  gm.Start();
+  Eigen::Vector2d robot = room.b.At(10, 20);
+  ExploreStatus s = gm.Update(room.Input(0, robot, true));
+  double t = 0.0;
+  while (s.state != ExploreState::kFinished && t < 500.0) {
+    t += 0.5;
+    if (s.state == ExploreState::kDriving && s.target) robot = *s.target;  // arrives
+    s = gm.Update(room.Input(t, robot, false));
+  }
+  ASSERT_EQ(s.state, ExploreState::kFinished);
+  EXPECT_GT(gm.counters().goals_reached, 1);
+  EXPECT_EQ(s.frontier_left, static_cast<int>(room.frontier.size()));
+  EXPECT_EQ(s.reachable_frontier_left, 0);
+  // All but the points in the room's corners, too close to the walls for
+  // any plan.
+  EXPECT_GT(s.visited_frontier_left, s.frontier_left * 3 / 4);
+  EXPECT_LE(s.visited_frontier_left, s.frontier_left);
+}
+
 TEST(GoalManagerTest, FinishesWhenNothingIsLeftAndReturnsHome) {
   Room room;
   room.frontier.clear();
@@ -319,6 +345,70 @@ TEST(GoalManagerTest, ANarrowedDoorDoesNotSealTheRoomBehindIt) {
   EXPECT_EQ(gave_up.frontier_left, static_cast<int>(door.frontier.size()));
   // Behind a door too narrow for any plan: left, but not reachable.
   EXPECT_EQ(gave_up.reachable_frontier_left, 0);
+}
+
+TEST(GoalManagerTest, ANarrowPassageTheRobotGotStuckInIsClosed) {
+  PinchedDoor door;
+  GoalManagerOptions o;  // stuck recovery and passage closing on
+  GoalManager gm = MakeManager(o);
+  gm.Start();
+  const auto input = [&](double t, const Eigen::Vector2d& robot, bool changed) {
+    ExploreInput in;
+    in.time_s = t;
+    in.robot_pose = geometry::Rigid2d(robot, 0.0);
+    in.map = &door.b.map();
+    in.frontier = &door.frontier;
+    in.map_changed = changed;
+    return in;
+  };
+  // In the door, on its way to the frontier beyond: pressed, not moving.
+  Eigen::Vector2d robot = door.b.At(19, 18);
+  ExploreStatus s = gm.Update(input(0, robot, true));
+  ASSERT_EQ(s.state, ExploreState::kDriving);
+  ASSERT_GT(s.goal->x(), door.b.At(20, 0).x());
+  for (double t = 0.5; t <= o.stuck_timeout_s; t += 0.5) s = gm.Update(input(t, robot, false));
+  ASSERT_EQ(gm.counters().recoveries, 1);
+  robot.x() -= 0.35;  // backed up
+  s = gm.Update(input(o.stuck_timeout_s + 2.5, robot, false));
+  EXPECT_EQ(s.state, ExploreState::kFailed);
+  EXPECT_EQ(gm.counters().passages_closed, 1);
+  // The door was the only way: no goal beyond it is issued again, and when
+  // the robot gives up, the frontier there counts as out of reach.
+  double t = o.stuck_timeout_s + 3.0;
+  for (; t < o.stuck_timeout_s + 3.0 + o.finish_with_frontier_after_s + 1.0; t += 0.5) {
+    s = gm.Update(input(t, robot, false));
+    EXPECT_NE(s.state, ExploreState::kDriving) << t;
+  }
+  EXPECT_EQ(s.state, ExploreState::kFinished);
+  EXPECT_EQ(s.reachable_frontier_left, 0);
+  EXPECT_EQ(gm.counters().goals_issued, 1);
+
+  // With closing off, or through a door the robot has driven through before
+  // (it must never be sealed in where it has been), the next goal goes
+  // through the same door again.
+  GoalManagerOptions keep = o;
+  keep.close_stuck_passage_radius_m = 0.0;
+  const std::vector<Eigen::Vector2d> driven = {door.b.At(25, 18), door.b.At(20, 18),
+                                               door.b.At(15, 18), door.b.At(10, 18)};
+  for (const bool closing_off : {true, false}) {
+    GoalManager again = MakeManager(closing_off ? keep : o);
+    again.Start();
+    robot = door.b.At(19, 18);
+    const auto with_driven = [&](double t2, bool changed) {
+      ExploreInput in = input(t2, robot, changed);
+      if (!closing_off) in.driven = &driven;
+      return in;
+    };
+    again.Update(with_driven(0, true));
+    for (double t2 = 0.5; t2 <= o.stuck_timeout_s; t2 += 0.5) again.Update(with_driven(t2, false));
+    robot.x() -= 0.35;
+    again.Update(with_driven(o.stuck_timeout_s + 2.5, false));
+    s = again.Update(with_driven(o.stuck_timeout_s + 3.0, false));
+    EXPECT_EQ(s.state, ExploreState::kDriving) << closing_off;
+    ASSERT_TRUE(s.goal.has_value());
+    EXPECT_GT(s.goal->x(), door.b.At(20, 0).x());
+    EXPECT_EQ(again.counters().passages_closed, closing_off ? 0 : 1);
+  }
 }
 
 TEST(GoalManagerTest, GoalIsKeptWhenASlightlyBetterOneAppearsAndSwitchedForAClearlyBetterOne) {

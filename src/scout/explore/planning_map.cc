@@ -70,6 +70,7 @@ void PlanningMap::AllowDriven(const std::vector<Eigen::Vector2d>& trajectory) {
       if (states_[i] == grid::CellState::kFree && traversable_[i] == 0) {
         traversable_[i] = kNarrow;
         has_narrow_ = true;
+        if (!closed_.empty()) closed_[i] = 0;
       }
     });
   };
@@ -82,6 +83,16 @@ void PlanningMap::AllowDriven(const std::vector<Eigen::Vector2d>& trajectory) {
     if (len > options_.driven_max_gap_m) continue;
     for (double s = step; s < len; s += step) allow(a + (b - a) * (s / len));
   }
+}
+
+void PlanningMap::CloseNarrow(const Eigen::Vector2d& p, double radius_m) {
+  if (closed_.empty()) closed_.assign(traversable_.size(), 0);
+  ForEachCellWithin(limits_, p, radius_m, [&](const grid::CellIndex& c) {
+    const int64_t i = limits_.FlatIndex(c);
+    if (traversable_[i] == 1) return;
+    traversable_[i] = 0;
+    closed_[i] = 1;
+  });
 }
 
 bool PlanningMap::StepAllowed(const grid::CellIndex& from, int k) const {

@@ -129,6 +129,13 @@ class PlanningMap {
   // 'trajectory' (global positions of the robot, oldest first; segments
   // longer than driven_max_gap_m skipped) traversable as narrow passages.
   void AllowDriven(const std::vector<Eigen::Vector2d>& trajectory);
+  // Closes the narrow-passage cells whose centres lie within 'radius_m' of
+  // 'p' (a passage the robot got stuck in): they become non-traversable, and
+  // they and the band cells there are closed() to StartRegion's escape too.
+  // A later AllowDriven opens the driven cells among them again.
+  void CloseNarrow(const Eigen::Vector2d& p, double radius_m);
+  // True when CloseNarrow closed the cell.
+  bool closed(int64_t flat) const { return !closed_.empty() && closed_[flat] != 0; }
 
   bool has_clearance() const { return !clearance_m_.empty(); }
   // Distance in metres from the cell's centre to the nearest occupied cell's
@@ -159,6 +166,7 @@ class PlanningMap {
   bool has_narrow_ = false;
   std::vector<uint8_t> blocked_;      // inflation levels (grid::InflationLevels)
   std::vector<uint8_t> traversable_;  // traversability_codes()
+  std::vector<uint8_t> closed_;       // empty until CloseNarrow
   std::vector<float> clearance_m_;
 };
 

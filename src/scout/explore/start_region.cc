@@ -75,8 +75,10 @@ void StartRegion::Escape(const PlanningMap& map) {
       const double d2 = (limits_.CellCenter(c) - robot_).squaredNorm();
       const grid::CellState s = map.state(limits_.FlatIndex(c));
       // The robot's own footprint is free in truth, whatever the map says.
-      const bool open =
-          s == grid::CellState::kFree || (s == grid::CellState::kUnknown && d2 <= footprint2);
+      // A passage closed where the robot got stuck stays closed beyond it.
+      const bool open = (s == grid::CellState::kFree &&
+                         (!map.closed(limits_.FlatIndex(c)) || d2 <= footprint2)) ||
+                        (s == grid::CellState::kUnknown && d2 <= footprint2);
       k = d2 <= escape2 && open && clearance(c) >= need;
     }
     return k == 1;

@@ -22,6 +22,7 @@ void ReadGoals(YamlSection s, explore::GoalManagerOptions* o) {
   s.ReadNonNegative("back_up_distance_m", &o->back_up_distance_m);
   s.ReadNonNegative("back_up_speed_mps", &o->back_up_speed_mps);
   s.ReadNonNegative("back_up_timeout_s", &o->back_up_timeout_s);
+  s.ReadNonNegative("close_stuck_passage_radius_m", &o->close_stuck_passage_radius_m);
   s.ReadNonNegative("goal_frontier_radius_m", &o->goal_frontier_radius_m);
   s.ReadNonNegative("goal_switch_margin", &o->goal_switch_margin);
   s.ReadNonNegative("goal_match_radius_m", &o->goal_match_radius_m);
@@ -31,6 +32,8 @@ void ReadGoals(YamlSection s, explore::GoalManagerOptions* o) {
     YamlSection g = s.Section("guard");
     g.ReadNonNegative("clearance_m", &o->guard.clearance_m);
     g.ReadNonNegative("horizon_s", &o->guard.horizon_s);
+    g.ReadNonNegative("steer_max_curvature_per_m", &o->guard.steer_max_curvature_per_m);
+    g.ReadNonNegative("steer_step_per_m", &o->guard.steer_step_per_m);
     g.RejectUnknownKeys();
   }
   {

@@ -37,6 +37,8 @@ TEST_F(ExploreConfigTest, DefaultFileMatchesTheBuiltInDefaults) {
   EXPECT_DOUBLE_EQ(c.explore.frontier_inflation_radius_m, d.explore.frontier_inflation_radius_m);
   EXPECT_DOUBLE_EQ(c.explore.goals.progress_timeout_s, d.explore.goals.progress_timeout_s);
   EXPECT_DOUBLE_EQ(c.explore.goals.max_stand_off_m, d.explore.goals.max_stand_off_m);
+  EXPECT_DOUBLE_EQ(c.explore.goals.close_stuck_passage_radius_m,
+                   d.explore.goals.close_stuck_passage_radius_m);
   EXPECT_DOUBLE_EQ(c.explore.traversability.driven_width_m,
                    d.explore.traversability.driven_width_m);
   EXPECT_DOUBLE_EQ(c.explore.traversability.driven_max_gap_m,
