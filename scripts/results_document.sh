@@ -26,6 +26,19 @@ not_run() {
 }
 
 # tables KIND NAME...: the Markdown tables of the finished runs, then the missing ones.
+# The last commit that changed what an explore run does. Runs whose summary
+# is older than it came from an earlier build; stale_runs NAME... lists them,
+# so a table never silently mixes builds.
+EXPLORE_BEHAVIOUR_COMMIT=a7ab572
+stale_runs() {
+  local since name f
+  since=$(git log -1 --format=%ct "$EXPLORE_BEHAVIOUR_COMMIT" 2>/dev/null) || return 0
+  for name in "$@"; do
+    f=$OUT/$name/summary.json
+    if [[ -f $f ]] && (($(stat -c %Y "$f") < since)); then printf '`%s` ' "$name"; fi
+  done
+}
+
 tables() {
   local kind=$1; shift
   local dirs
@@ -137,9 +150,18 @@ write_document() {
     echo "placed relative to the robot's true pose as it was relative to its estimate (each is"
     echo "listed with its position in the run's \`summary.json\`); *ATE* is the"
     echo "estimated trajectory against the simulator's. A run ends \`complete\` when no navigation"
-    echo "point is left and at most 0.5 m of frontier a plan reaches remains, \`no_progress\` when"
-    echo "the policy gave up on reachable frontier or coverage stalled for 300 s."
+    echo "point is left and at most 0.5 m of frontier a plan reaches remains away from goals the"
+    echo "robot reached (frontier that stayed where it went is counted as \`visited_frontier_left\`),"
+    echo "\`no_progress\` when the policy gave up on reachable frontier or coverage stalled for 300 s."
     echo
+    local stale
+    stale=$(stale_runs "${EXPLORE[@]}")
+    if [[ -n $stale ]]; then
+      echo "Made with a build older than commit $EXPLORE_BEHAVIOUR_COMMIT, which changed what every"
+      echo "policy's robot does (collision guard steering, stuck passages closed), so not like-for-like"
+      echo "with the other runs: $stale"
+      echo
+    fi
     tables explore "${EXPLORE[@]}"
     explore_figures "${EXPLORE[@]}"
     echo "## (c) ε sweep (bfs, direct) on the frontier-bench office"

@@ -116,7 +116,6 @@ nlohmann::json Summary(const ExploreArgs& args, const exploration::ExplorationLo
                 {"recoveries", r.counters.recoveries},
                 {"guard_stops", r.counters.guard_stops},
                 {"guard_steers", r.counters.guard_steers},
-                {"passages_closed", r.counters.passages_closed},
                 {"frontier_left", r.frontier_left},
                 {"reachable_frontier_left", r.reachable_frontier_left},
                 {"visited_frontier_left", r.visited_frontier_left}};

@@ -376,7 +376,6 @@ void GoalManager::Drive(const ExploreInput& in, ExploreStatus& status) {
         // The passage closes with the next planning map (built by the
         // selection FailGoal leads to).
         stuck_places_.RecordFailure(from, in.submaps, *map_);
-        ++counters_.passages_closed;
         map_dirty_ = true;
       }
       FailGoal(in);

@@ -133,11 +133,10 @@ struct ExploreCounters {
   int goals_dropped = 0;      // the map put it inside the inflated band
   int goals_retried = 0;      // lifted from the blacklist after a map change
   int selections = 0;
-  int escapes = 0;          // searches that started by leaving the band or a pocket
-  int recoveries = 0;       // back-ups after the robot got stuck
-  int guard_stops = 0;      // the collision guard stopped a forward command
-  int guard_steers = 0;     // control cycles it steered another arc instead
-  int passages_closed = 0;  // stuck places whose narrow passages were closed
+  int escapes = 0;       // searches that started by leaving the band or a pocket
+  int recoveries = 0;    // back-ups after the robot got stuck (closing its passage)
+  int guard_stops = 0;   // the collision guard stopped a forward command
+  int guard_steers = 0;  // control cycles it steered another arc instead
 };
 
 struct ExploreStatus {
