@@ -64,14 +64,14 @@ struct GoalManagerOptions {
   // Where the robot got stuck (the back-up began), the narrow-passage cells
   // within this radius (metres) are closed to planning; they reopen, as
   // failed goals do, when the map around them changes (failed_goals' retry
-  // options and max_failures). The map shows the passage, but the robot
-  // cannot pass it (a door left ajar a few centimetres narrower than the
-  // map says), and only the goals were blacklisted before: in office seed
-  // 2, six goals in a row, each just outside the last one's blacklist
-  // radius, sent it into the same ajar door, each failing after 8 s, and it
-  // gave up on the room behind, reachable through its open door. Cells the
-  // robot has driven over stay open (ExploreInput::driven), so this never
-  // seals it into a room it entered. 0: off.
+  // options and max_failures). The map shows a passage there, but the
+  // robot did not fit through it, and only the goal was blacklisted: the
+  // next goal, just outside the blacklist radius, sends it the same way.
+  // Office seed 3 (with the guard steering): 3 goals failed that way and
+  // the run ended no_progress; with this, 2 failed and it completed. Cells
+  // the robot has driven over stay open (ExploreInput::driven): without
+  // that, seeds 3 and 5 closed themselves in and ended "complete" at
+  // coverage 0.44 and 0.71. 0: off.
   double close_stuck_passage_radius_m = 0.5;
   // The robot is sent to the last point of the path, at most this far (path
   // metres) before a goal, where its disc covers known-free cells only: a
