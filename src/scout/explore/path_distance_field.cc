@@ -94,20 +94,13 @@ PathDistanceField::PathDistanceField(const PlanningMap& map, const StartRegion& 
 
 std::optional<PathDistanceField::Reached> PathDistanceField::NearestReached(
     const Eigen::Vector2d& p, double radius_m) const {
-  // Inline rather than CellsWithin: this runs for every frontier point.
+  // ForEachCellWithin rather than CellsWithin: this runs for every frontier
+  // point.
   std::optional<Reached> best;
-  const grid::CellIndex centre = limits_.CellContaining(p);
-  const int r = static_cast<int>(std::ceil(radius_m / limits_.resolution()));
-  const double r2 = radius_m * radius_m;
-  for (int y = centre.y - r; y <= centre.y + r; ++y) {
-    for (int x = centre.x - r; x <= centre.x + r; ++x) {
-      const grid::CellIndex c{x, y};
-      if (!limits_.Contains(c)) continue;
-      if (!(c == centre) && (limits_.CellCenter(c) - p).squaredNorm() > r2) continue;
-      const float dist = distance_m_[Padded(c)];
-      if (std::isfinite(dist) && (!best || dist < best->distance_m)) best = Reached{dist, c};
-    }
-  }
+  ForEachCellWithin(limits_, p, radius_m, [&](const grid::CellIndex& c) {
+    const float dist = distance_m_[Padded(c)];
+    if (std::isfinite(dist) && (!best || dist < best->distance_m)) best = Reached{dist, c};
+  });
   return best;
 }
 
