@@ -27,11 +27,11 @@ struct CollisionGuardOptions {
   // nearest arc whose curvature differs by at most this much (1/m, in steps
   // of steer_step_per_m) that is clear over the whole horizon, and drives
   // that instead; the follower steers back to its path next cycle. Where
-  // the map places a wall a few centimetres too far, the robot otherwise
+  // the path runs closer to a wall than the map says, the robot otherwise
   // stops, turns on the spot toward its path, and stops again: in office
-  // seed 2 (planned 0.30 m clear of the map's walls, the scan's nearest
-  // return 0.24 m away) it stood beside two walls for 150 s while 16 goals
-  // failed one after another. 0: never steer (only slow down).
+  // seed 2 it got stuck 16 times in 150 s at two places beside walls (at
+  // the second, the scan's nearest return 0.23-0.25 m to its side), a goal
+  // failing each time. 0: never steer (only slow down).
   double steer_max_curvature_per_m = 2.0;
   double steer_step_per_m = 0.25;
 };
