@@ -63,6 +63,7 @@ void ReadLocal(YamlSection s, slam::LocalSlamOptions* o) {
     YamlSection m = s.Section("submaps");
     m.ReadPositive("resolution_m", &o->submaps.resolution_m);
     m.ReadInt("num_range_data", &o->submaps.num_range_data, 1);
+    m.ReadNonNegative("max_travel_m", &o->submaps.max_travel_m);
     m.ReadPositive("hit_probability", &o->submaps.insertion.hit_probability);
     m.ReadPositive("miss_probability", &o->submaps.insertion.miss_probability);
     m.RejectUnknownKeys();
@@ -72,6 +73,7 @@ void ReadLocal(YamlSection s, slam::LocalSlamOptions* o) {
 
 void ReadPoseGraph(YamlSection s, slam::PoseGraphOptions* o) {
   s.ReadInt("optimize_every_n_nodes", &o->optimize_every_n_nodes, 0);
+  s.ReadNonNegative("optimize_every_travel_m", &o->optimize_every_travel_m);
   s.ReadBool("synchronous", &o->synchronous);
   s.ReadNonNegative("intra_submap_translation_weight", &o->intra_submap_translation_weight);
   s.ReadNonNegative("intra_submap_rotation_weight", &o->intra_submap_rotation_weight);
@@ -84,6 +86,7 @@ void ReadPoseGraph(YamlSection s, slam::PoseGraphOptions* o) {
     YamlSection c = s.Section("constraint_builder");
     slam::ConstraintBuilderOptions& b = o->constraint_builder;
     c.ReadPositive("sampling_ratio", &b.sampling_ratio);
+    c.ReadNonNegative("max_sample_spacing_m", &b.max_sample_spacing_m);
     c.ReadPositive("max_constraint_distance_m", &b.max_constraint_distance_m);
     c.ReadPositive("min_score", &b.min_score);
     c.ReadNonNegative("min_overlap", &b.min_overlap);

@@ -105,6 +105,11 @@ void Validate(const ConstraintBuilderOptions& options) {
         "constraint_builder options 'min_angular_search_window_deg' and "
         "'angular_search_window_deg_per_m': expected finite values >= 0");
   }
+  if (!(options.max_sample_spacing_m >= 0.0) || std::isinf(options.max_sample_spacing_m)) {
+    throw std::invalid_argument(
+        "constraint_builder option 'max_sample_spacing_m': expected a finite value >= 0, got " +
+        std::to_string(options.max_sample_spacing_m));
+  }
   if (options.min_num_points < 1) {
     throw std::invalid_argument("constraint_builder option 'min_num_points': expected >= 1, got " +
                                 std::to_string(options.min_num_points));
@@ -134,7 +139,7 @@ void ConstraintBuilder::AddFinishedSubmap(int submap_id,
   auto matcher =
       std::make_unique<FastCorrelativeScanMatcher>(grid, options_.fast_correlative_scan_matcher);
   submaps_.emplace(submap_id, SubmapMatcher{std::move(grid), std::move(matcher),
-                                            FixedRatioSampler(options_.sampling_ratio)});
+                                            FixedRatioSampler(options_.sampling_ratio), std::nullopt});
 }
 
 double ConstraintBuilder::SearchWindow(double travel_m) const {
@@ -153,7 +158,7 @@ double ConstraintBuilder::AngularSearchWindow(double travel_m) const {
 }
 
 bool ConstraintBuilder::ShouldSearch(int submap_id, const geometry::Rigid2d& initial_relative_pose,
-                                     const PointCloud& points) {
+                                     const PointCloud& points, double node_travel_m) {
   const auto it = submaps_.find(submap_id);
   if (it == submaps_.end()) return false;
   if (initial_relative_pose.translation().norm() > options_.max_constraint_distance_m) {
@@ -165,7 +170,15 @@ bool ConstraintBuilder::ShouldSearch(int submap_id, const geometry::Rigid2d& ini
     ++num_without_overlap_;
     return false;
   }
-  return it->second.sampler.Pulse();
+  SubmapMatcher& submap = it->second;
+  const bool sampled = submap.sampler.Pulse();
+  const bool spaced = options_.max_sample_spacing_m > 0.0 &&
+                      (!submap.last_searched_travel_m ||
+                       std::abs(node_travel_m - *submap.last_searched_travel_m) >=
+                           options_.max_sample_spacing_m);
+  if (!sampled && !spaced) return false;
+  submap.last_searched_travel_m = node_travel_m;
+  return true;
 }
 
 std::optional<Constraint> ConstraintBuilder::Search(int submap_id, int node_id,

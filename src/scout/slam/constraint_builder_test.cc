@@ -82,19 +82,49 @@ TEST(ConstraintBuilderTest, SamplesAFixedRatioOfNearbyPairsPerSubmap) {
   options.min_overlap = 0.0;  // the sampler alone
   ConstraintBuilder builder(options);
   const PointCloud points = global_testing::ScanReturns(scene.walls, Rigid2d(-5.0, -4.5, 0.0));
-  EXPECT_FALSE(builder.ShouldSearch(0, Rigid2d(), points));  // not finished yet
+  EXPECT_FALSE(builder.ShouldSearch(0, Rigid2d(), points, 0.0));  // not finished yet
   builder.AddFinishedSubmap(0, scene.grid);
   builder.AddFinishedSubmap(1, scene.grid);
   // Far pairs are never searched and do not advance the sampler.
   for (int i = 0; i < 5; ++i) {
-    EXPECT_FALSE(builder.ShouldSearch(0, Rigid2d(15.5, 0.0, 0.0), points));
+    EXPECT_FALSE(builder.ShouldSearch(0, Rigid2d(15.5, 0.0, 0.0), points, 0.0));
   }
   int searched = 0;
   for (int i = 0; i < 100; ++i)
-    searched += builder.ShouldSearch(0, Rigid2d(14.0, 3.0, 0.0), points);
+    searched += builder.ShouldSearch(0, Rigid2d(14.0, 3.0, 0.0), points, 0.0);
   EXPECT_EQ(searched, 30);
   // Each submap samples on its own: its first eligible pair is searched.
-  EXPECT_TRUE(builder.ShouldSearch(1, Rigid2d(1.0, 0.0, 0.0), points));
+  EXPECT_TRUE(builder.ShouldSearch(1, Rigid2d(1.0, 0.0, 0.0), points, 0.0));
+}
+
+TEST(ConstraintBuilderTest, SearchesAtLeastOncePerSampleSpacingOfTravel) {
+  const SubmapScene scene;
+  ConstraintBuilderOptions options;
+  options.sampling_ratio = 0.05;
+  options.max_sample_spacing_m = 4.0;
+  options.min_overlap = 0.0;
+  ConstraintBuilder spaced(options);
+  options.max_sample_spacing_m = 0.0;
+  ConstraintBuilder ratio_only(options);
+  const PointCloud points = global_testing::ScanReturns(scene.walls, Rigid2d(-5.0, -4.5, 0.0));
+  spaced.AddFinishedSubmap(0, scene.grid);
+  ratio_only.AddFinishedSubmap(0, scene.grid);
+  // 100 nodes one metre apart (a sparse log): the ratio alone searches 5 of
+  // them, 20 m apart; the spacing searches every 4 m.
+  std::vector<int> searched_spaced, searched_ratio;
+  for (int i = 0; i < 100; ++i) {
+    if (spaced.ShouldSearch(0, Rigid2d(1.0, 0.0, 0.0), points, 1.0 * i)) {
+      searched_spaced.push_back(i);
+    }
+    if (ratio_only.ShouldSearch(0, Rigid2d(1.0, 0.0, 0.0), points, 1.0 * i)) {
+      searched_ratio.push_back(i);
+    }
+  }
+  EXPECT_EQ(searched_ratio, (std::vector<int>{0, 20, 40, 60, 80}));
+  ASSERT_EQ(searched_spaced.size(), 25u);
+  for (size_t k = 0; k < searched_spaced.size(); ++k) EXPECT_EQ(searched_spaced[k], 4 * int(k));
+  options.max_sample_spacing_m = -1.0;
+  EXPECT_THROW(ConstraintBuilder{options}, std::invalid_argument);
 }
 
 TEST(ConstraintBuilderTest, SearchesOnlyPairsWhoseScanOverlapsTheSubmap) {
@@ -107,15 +137,15 @@ TEST(ConstraintBuilderTest, SearchesOnlyPairsWhoseScanOverlapsTheSubmap) {
   const PointCloud points = global_testing::ScanReturns(scene.walls, node_world);
   const Rigid2d in_submap = scene.submap_frame.inverse() * node_world;
   EXPECT_GT(ObservedFraction(*scene.grid, in_submap, points), 0.9);
-  EXPECT_TRUE(builder.ShouldSearch(0, in_submap, points));
+  EXPECT_TRUE(builder.ShouldSearch(0, in_submap, points, 0.0));
   // The same scan believed 10 m away, where the submap has seen nothing.
   const Rigid2d elsewhere = in_submap * Rigid2d(0.0, 10.0, 0.0);
   EXPECT_LT(ObservedFraction(*scene.grid, elsewhere, points), 0.05);
-  EXPECT_FALSE(builder.ShouldSearch(0, elsewhere, points));
+  EXPECT_FALSE(builder.ShouldSearch(0, elsewhere, points, 0.0));
   EXPECT_EQ(builder.num_without_overlap(), 1);
   // Three points fit somewhere in any submap: too few to search at all.
   const PointCloud three(points.begin(), points.begin() + 3);
-  EXPECT_FALSE(builder.ShouldSearch(0, in_submap, three));
+  EXPECT_FALSE(builder.ShouldSearch(0, in_submap, three, 0.0));
 }
 
 TEST(ConstraintBuilderTest, RaysThroughKnownWallsMeanTheWrongPlace) {

@@ -39,6 +39,11 @@ void Validate(const PoseGraphOptions& options) {
     throw std::invalid_argument("pose_graph option 'optimize_every_n_nodes': expected >= 0, got " +
                                 std::to_string(options.optimize_every_n_nodes));
   }
+  if (!(options.optimize_every_travel_m >= 0.0) || std::isinf(options.optimize_every_travel_m)) {
+    throw std::invalid_argument(
+        "pose_graph option 'optimize_every_travel_m': expected a finite value >= 0, got " +
+        std::to_string(options.optimize_every_travel_m));
+  }
   if (options.skip_neighbour_submaps < 0) {
     throw std::invalid_argument("pose_graph option 'skip_neighbour_submaps': expected >= 0, got " +
                                 std::to_string(options.skip_neighbour_submaps));
@@ -117,12 +122,17 @@ int PoseGraph::AddNode(double time_s, const geometry::Rigid2d& local_pose, const
                               options_.intra_submap_translation_weight,
                               options_.intra_submap_rotation_weight, ConstraintKind::kIntraSubmap});
     }
+    const double node_travel_m = node.travel_m;
     nodes_.push_back(std::move(node));
     stats_.num_nodes = static_cast<int>(nodes_.size());
     stats_.num_submaps = static_cast<int>(submaps_.size());
-    if (options_.optimize_every_n_nodes > 0 &&
-        ++nodes_since_optimization_ >= options_.optimize_every_n_nodes) {
+    ++nodes_since_optimization_;
+    if ((options_.optimize_every_n_nodes > 0 &&
+         nodes_since_optimization_ >= options_.optimize_every_n_nodes) ||
+        (options_.optimize_every_travel_m > 0.0 &&
+         node_travel_m - travel_at_optimization_m_ >= options_.optimize_every_travel_m)) {
       nodes_since_optimization_ = 0;
+      travel_at_optimization_m_ = node_travel_m;
       optimize = true;
       // The solve covers exactly what exists now, however late it runs, so
       // background results equal synchronous ones.
@@ -190,6 +200,7 @@ void PoseGraph::SearchPair(int node_id, int submap_id) {
   geometry::Rigid2d initial_relative_pose;
   std::shared_ptr<const PointCloud> points;
   double travel_m = 0.0;
+  double node_travel_m = 0.0;
   {
     std::lock_guard<std::mutex> lock(mutex_);
     initial_relative_pose =
@@ -198,12 +209,15 @@ void PoseGraph::SearchPair(int node_id, int submap_id) {
     // Trajectory between the node and the nearest of the submap's nodes
     // (inserted consecutively, so their travel is an interval).
     const std::vector<int>& members = submaps_[submap_id].node_ids;
-    const double node_travel_m = nodes_[node_id].travel_m;
+    node_travel_m = nodes_[node_id].travel_m;
     const double first_m = nodes_[members.front()].travel_m;
     const double last_m = nodes_[members.back()].travel_m;
     travel_m = std::max({0.0, first_m - node_travel_m, node_travel_m - last_m});
   }
-  if (!constraint_builder_.ShouldSearch(submap_id, initial_relative_pose, *points)) return;
+  if (!constraint_builder_.ShouldSearch(submap_id, initial_relative_pose, *points,
+                                        node_travel_m)) {
+    return;
+  }
   const std::optional<Constraint> found =
       constraint_builder_.Search(submap_id, node_id, initial_relative_pose, *points, travel_m);
   std::lock_guard<std::mutex> lock(mutex_);
@@ -276,6 +290,7 @@ void PoseGraph::RunFinalOptimization() {
     num_nodes = static_cast<int>(nodes_.size());
     num_submaps = static_cast<int>(submaps_.size());
     nodes_since_optimization_ = 0;
+    if (!nodes_.empty()) travel_at_optimization_m_ = nodes_.back().travel_m;
   }
   work_queue_.Schedule([this, num_nodes, num_submaps] { Optimize(num_nodes, num_submaps); });
   work_queue_.WaitUntilIdle();

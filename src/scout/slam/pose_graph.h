@@ -21,6 +21,10 @@ namespace scout::slam {
 struct PoseGraphOptions {
   // A solve runs after every this many added nodes (0: only on request).
   int optimize_every_n_nodes = 90;
+  // ... or once the trajectory has grown this much since the last solve,
+  // whichever comes first (0 = nodes only). 90 nodes are 10-20 m at 0.2 m
+  // between scans but 90 m in logs with one scan per metre.
+  double optimize_every_travel_m = 20.0;
   // Run constraint search and solves in the calling thread, in a fixed order
   // (tests, lockstep evaluation). Otherwise one background thread does them.
   bool synchronous = false;
@@ -158,6 +162,7 @@ class PoseGraph {
   std::vector<Constraint> constraints_;
   geometry::Rigid2d local_to_global_;
   int nodes_since_optimization_ = 0;
+  double travel_at_optimization_m_ = 0.0;  // node travel when the last solve was scheduled
   PoseGraphStats stats_;
 
   // Declared last: destroyed first, so queued steps never see dead members.

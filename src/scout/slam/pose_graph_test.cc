@@ -133,8 +133,10 @@ double RmsError(const std::vector<Rigid2d>& poses, const std::vector<NodeInput>&
 }
 
 TEST(PoseGraphTest, LoopClosuresRemoveTheDriftOfLocalSlam) {
+  PoseGraphOptions options = Synchronous();
+  options.optimize_every_travel_m = 0.0;  // the node cadence alone (checked below)
   const auto start = std::chrono::steady_clock::now();
-  const Outcome out = Feed(Synchronous());
+  const Outcome out = Feed(options);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::vector<Rigid2d> local, global;
@@ -262,6 +264,25 @@ TEST(PoseGraphTest, SkipsNeighbourSubmapsWhenAsked) {
   PoseGraphOptions negative = Synchronous();
   negative.skip_neighbour_submaps = -1;
   EXPECT_THROW(PoseGraph(negative, nullptr), std::invalid_argument);
+}
+
+TEST(PoseGraphTest, OptimizesEveryNNodesOrEveryStretchOfTravel) {
+  // The drive: 170 nodes 0.4 m apart (67.6 m).
+  PoseGraphOptions by_nodes = Synchronous();
+  by_nodes.optimize_every_n_nodes = 50;
+  by_nodes.optimize_every_travel_m = 0.0;
+  EXPECT_EQ(Feed(by_nodes).stats.num_optimizations, 3 + 1);  // nodes 50, 100, 150; final
+  PoseGraphOptions by_travel = Synchronous();
+  by_travel.optimize_every_n_nodes = 0;
+  by_travel.optimize_every_travel_m = 10.0;
+  // Every 25 nodes (10 m; node k is 0.4 k m along): 6 solves, then the final one.
+  EXPECT_EQ(Feed(by_travel).stats.num_optimizations, 6 + 1);
+  PoseGraphOptions both = by_nodes;
+  both.optimize_every_travel_m = 10.0;
+  EXPECT_EQ(Feed(both).stats.num_optimizations, 6 + 1);
+  PoseGraphOptions bad = Synchronous();
+  bad.optimize_every_travel_m = -1.0;
+  EXPECT_THROW(PoseGraph(bad, nullptr), std::invalid_argument);
 }
 
 TEST(PoseGraphTest, RejectsGapsInSubmapIdsAndMissingGrids) {

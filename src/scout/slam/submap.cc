@@ -15,6 +15,10 @@ void Validate(const SubmapOptions& options) {
     throw std::invalid_argument("submaps.num_range_data must be >= 1, got " +
                                 std::to_string(options.num_range_data));
   }
+  if (!(options.max_travel_m >= 0.0) || std::isinf(options.max_travel_m)) {
+    throw std::invalid_argument("submaps.max_travel_m must be finite and >= 0, got " +
+                                std::to_string(options.max_travel_m));
+  }
   // The inserter names hit_probability / miss_probability itself.
   grid::RangeDataInserter inserter(options.insertion);
 }
@@ -48,6 +52,7 @@ void Submap::InsertRangeData(const Eigen::Vector2d& origin, const PointCloud& re
   const Eigen::Vector2d origin_in_submap = to_submap * origin;
   inserter.Insert(origin_in_submap, TransformPointCloud(returns, to_submap),
                   TransformPointCloud(misses, to_submap), grid_.get());
+  if (!scan_origins_.empty()) travel_m_ += (origin_in_submap - scan_origins_.back()).norm();
   scan_origins_.push_back(origin_in_submap);
 }
 
@@ -62,9 +67,9 @@ ActiveSubmaps::Insertion ActiveSubmaps::InsertRangeData(const Eigen::Vector2d& o
                                                         const PointCloud& returns,
                                                         const PointCloud& misses) {
   Insertion insertion;
-  if (submaps_.empty() || submaps_.back()->num_range_data() == options_.num_range_data) {
-    // The older submap was finished by the previous insertion (it reached
-    // 2 * num_range_data exactly when the newer reached num_range_data).
+  if (submaps_.empty() || HalfFull(*submaps_.back())) {
+    // The older submap was finished by the previous insertion, which made
+    // the newer one half full.
     if (submaps_.size() == 2) submaps_.erase(submaps_.begin());
     submaps_.push_back(std::make_shared<Submap>(next_id_, origin, options_.resolution_m));
     insertion.created.push_back(next_id_++);
@@ -72,12 +77,17 @@ ActiveSubmaps::Insertion ActiveSubmaps::InsertRangeData(const Eigen::Vector2d& o
   for (const std::shared_ptr<Submap>& submap : submaps_) {
     submap->InsertRangeData(origin, returns, misses, inserter_);
   }
-  if (submaps_.front()->num_range_data() == 2 * options_.num_range_data) {
+  if (submaps_.size() == 2 && HalfFull(*submaps_.back())) {
     submaps_.front()->Finish();
     insertion.finished.push_back(submaps_.front()->id());
   }
   insertion.submaps.assign(submaps_.begin(), submaps_.end());
   return insertion;
+}
+
+bool ActiveSubmaps::HalfFull(const Submap& submap) const {
+  return submap.num_range_data() >= options_.num_range_data ||
+         (options_.max_travel_m > 0.0 && submap.travel_m() >= options_.max_travel_m);
 }
 
 }  // namespace scout::slam

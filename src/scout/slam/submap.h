@@ -19,6 +19,10 @@ struct SubmapOptions {
   // Scans after which the next submap starts; a submap receives twice this
   // many (ALGORITHMS §7: the paper's 70).
   int num_range_data = 70;
+  // ... or once the newer submap's scans span this much travel, whichever
+  // comes first (0 = scans only). Sparse logs (one scan per metre) would
+  // otherwise make each submap 70 m of corridor, with no loop closure inside.
+  double max_travel_m = 15.0;
   // Hit / miss probabilities of scan insertion (ALGORITHMS §7: 0.55 / 0.49).
   grid::RangeDataInserterOptions insertion;
 };
@@ -43,6 +47,8 @@ class Submap {
   // snapshots that are no longer needed.
   std::shared_ptr<const grid::ProbabilityGrid> grid() const { return grid_; }
   int num_range_data() const { return static_cast<int>(scan_origins_.size()); }
+  // Summed distance between consecutive scan origins.
+  double travel_m() const { return travel_m_; }
   bool finished() const { return finished_; }
   // Sensor origin of every inserted scan, in the submap frame.
   const std::vector<Eigen::Vector2d>& scan_origins() const { return scan_origins_; }
@@ -64,14 +70,16 @@ class Submap {
   geometry::Rigid2d local_pose_;
   std::shared_ptr<grid::ProbabilityGrid> grid_;
   std::vector<Eigen::Vector2d> scan_origins_;
+  double travel_m_ = 0.0;
   bool finished_ = false;
   int num_grid_copies_ = 0;
 };
 
-// The two submaps scans are inserted into (Hess et al. 2016): the older one
-// is finished after 2 * num_range_data scans; the newer one starts when the
-// other has received num_range_data, so consecutive submaps overlap by half
-// and the older always has a well-filled grid to match against.
+// The two submaps scans are inserted into (Hess et al. 2016): a newer one
+// starts when the newest is half full (num_range_data scans, or max_travel_m
+// of travel), and the older one is finished when the newer is half full, so
+// consecutive submaps overlap by half and the older always has a well-filled
+// grid to match against.
 class ActiveSubmaps {
  public:
   // What one insertion did; ids are dense from 0 in creation order.
@@ -95,6 +103,8 @@ class ActiveSubmaps {
   int num_submaps_created() const { return next_id_; }
 
  private:
+  bool HalfFull(const Submap& submap) const;
+
   SubmapOptions options_;
   grid::RangeDataInserter inserter_;
   std::vector<std::shared_ptr<Submap>> submaps_;

@@ -49,6 +49,41 @@ TEST(ActiveSubmapsTest, NumbersDenselyAndFinishesAfterTwiceNumRangeData) {
   EXPECT_EQ(active.num_submaps_created(), 5);
 }
 
+TEST(ActiveSubmapsTest, StartsTheNextSubmapAfterMaxTravelWhenScansAreSparse) {
+  SubmapOptions options;  // 70 scans or 15 m
+  options.max_travel_m = 15.0;
+  ActiveSubmaps active(options);
+  std::vector<int> created_at, finished_at;  // scan indices
+  for (int i = 0; i < 60; ++i) {
+    // One scan per metre along x: 15 m of travel after 16 scans.
+    const Rigid2d pose(0.1 + 1.0 * i, 0.2, 0.0);
+    const LocalScan scan = ScanAt(Rigid2d(0.1, 0.2, 0.0));
+    const ActiveSubmaps::Insertion insertion = active.InsertRangeData(
+        pose.translation(), TransformPointCloud(scan.returns, Rigid2d(1.0 * i, 0.0, 0.0)),
+        TransformPointCloud(scan.misses, Rigid2d(1.0 * i, 0.0, 0.0)));
+    if (!insertion.created.empty()) created_at.push_back(i);
+    if (!insertion.finished.empty()) finished_at.push_back(i);
+  }
+  EXPECT_EQ(created_at, (std::vector<int>{0, 16, 32, 48}));
+  // The older one finishes with the scan that makes the newer half full.
+  EXPECT_EQ(finished_at, (std::vector<int>{31, 47}));
+  EXPECT_NEAR(active.submaps().front()->travel_m(), 27.0, 1e-9);  // scans 32..59
+
+  // Dense scans never reach the travel limit: 70 scans per submap as before.
+  ActiveSubmaps dense(options);
+  const LocalScan scan = ScanAt(Rigid2d(0.1, 0.2, 0.0));
+  for (int i = 0; i < 141; ++i) {
+    const ActiveSubmaps::Insertion insertion =
+        dense.InsertRangeData({0.1 + 0.1 * i, 0.2}, scan.returns, scan.misses);
+    if (i == 70) {
+      EXPECT_EQ(insertion.created, std::vector<events::SubmapId>{1});
+    }
+    if (i == 139) {
+      EXPECT_EQ(insertion.finished, std::vector<events::SubmapId>{0});
+    }
+  }
+}
+
 TEST(SubmapTest, FramesGrowthAndOrigins) {
   const grid::RangeDataInserter inserter({});
   Submap submap(3, {1.0, 2.0}, 0.05);
@@ -110,6 +145,9 @@ TEST(SubmapTest, RejectsInvalidOptions) {
   EXPECT_THROW(ActiveSubmaps{options}, std::invalid_argument);
   options = {};
   options.resolution_m = 0.0;
+  EXPECT_THROW(ActiveSubmaps{options}, std::invalid_argument);
+  options = {};
+  options.max_travel_m = -1.0;
   EXPECT_THROW(ActiveSubmaps{options}, std::invalid_argument);
 }
 
