@@ -138,8 +138,9 @@ void ConstraintBuilder::AddFinishedSubmap(int submap_id,
   // The matcher shares the grid (its finest level) rather than copying it.
   auto matcher =
       std::make_unique<FastCorrelativeScanMatcher>(grid, options_.fast_correlative_scan_matcher);
-  submaps_.emplace(submap_id, SubmapMatcher{std::move(grid), std::move(matcher),
-                                            FixedRatioSampler(options_.sampling_ratio), std::nullopt});
+  submaps_.emplace(submap_id,
+                   SubmapMatcher{std::move(grid), std::move(matcher),
+                                 FixedRatioSampler(options_.sampling_ratio), std::nullopt});
 }
 
 double ConstraintBuilder::SearchWindow(double travel_m) const {
@@ -172,10 +173,10 @@ bool ConstraintBuilder::ShouldSearch(int submap_id, const geometry::Rigid2d& ini
   }
   SubmapMatcher& submap = it->second;
   const bool sampled = submap.sampler.Pulse();
-  const bool spaced = options_.max_sample_spacing_m > 0.0 &&
-                      (!submap.last_searched_travel_m ||
-                       std::abs(node_travel_m - *submap.last_searched_travel_m) >=
-                           options_.max_sample_spacing_m);
+  const bool spaced =
+      options_.max_sample_spacing_m > 0.0 &&
+      (!submap.last_searched_travel_m ||
+       std::abs(node_travel_m - *submap.last_searched_travel_m) >= options_.max_sample_spacing_m);
   if (!sampled && !spaced) return false;
   submap.last_searched_travel_m = node_travel_m;
   return true;
