@@ -214,8 +214,7 @@ void PoseGraph::SearchPair(int node_id, int submap_id) {
     const double last_m = nodes_[members.back()].travel_m;
     travel_m = std::max({0.0, first_m - node_travel_m, node_travel_m - last_m});
   }
-  if (!constraint_builder_.ShouldSearch(submap_id, initial_relative_pose, *points,
-                                        node_travel_m)) {
+  if (!constraint_builder_.ShouldSearch(submap_id, initial_relative_pose, *points, node_travel_m)) {
     return;
   }
   const std::optional<Constraint> found =
