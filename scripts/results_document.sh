@@ -29,7 +29,7 @@ not_run() {
 # The last commit that changed what an explore run does. Runs whose summary
 # is older than it came from an earlier build; stale_runs NAME... lists them,
 # so a table never silently mixes builds.
-EXPLORE_BEHAVIOUR_COMMIT=a7ab572
+EXPLORE_BEHAVIOUR_COMMIT=ccc990f
 stale_runs() {
   local since name f
   since=$(git log -1 --format=%ct "$EXPLORE_BEHAVIOUR_COMMIT" 2>/dev/null) || return 0
