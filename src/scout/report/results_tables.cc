@@ -216,12 +216,22 @@ std::optional<double> PathToCoverage(const RunData& run, double level) {
   return std::nullopt;
 }
 
+// Simulated seconds per wall-clock second of the run.
+std::optional<double> RealtimeFactor(const Json& summary) {
+  const std::optional<double> sim = Number(summary, "sim_time_s");
+  const std::optional<double> wall = Number(summary, "wall_time_s");
+  if (!sim || !wall || !(*wall > 0.0)) return std::nullopt;
+  return *sim / *wall;
+}
+
 void AppendExplore(const std::vector<RunData>& runs, std::ostringstream& out) {
   std::vector<Row> rows;
   struct Group {
     int runs = 0, reached = 0;
     double coverage = 0.0, min_coverage = 1.0, path_99 = 0.0, time_99 = 0.0;
     double unreachable = 0.0, collisions = 0.0;
+    int with_ate = 0;
+    double ate_sum = 0.0, ate_max = 0.0;
   };
   std::vector<std::pair<std::string, std::string>> order;
   std::map<std::pair<std::string, std::string>, Group> groups;
@@ -235,7 +245,8 @@ void AppendExplore(const std::vector<RunData>& runs, std::ostringstream& out) {
                     Fixed(Number(s, "sim_time_s"), 0), Fixed(time_99, 0),
                     Count(Number(s, "goals/issued")), Count(Number(s, "goals/reached")),
                     Count(Number(s, "goals/unreachable")), Count(Number(s, "collisions")),
-                    Fixed(Number(s, "wall_time_s"), 0)});
+                    Fixed(Number(s, "ate_rmse_m"), 3), Fixed(Number(s, "wall_time_s"), 0),
+                    Fixed(RealtimeFactor(s), 1)});
     const std::pair<std::string, std::string> key{Text(s, "world"), Text(s, "goals_policy")};
     if (!groups.count(key)) order.push_back(key);
     Group& g = groups[key];
@@ -245,30 +256,38 @@ void AppendExplore(const std::vector<RunData>& runs, std::ostringstream& out) {
     g.min_coverage = std::min(g.min_coverage, coverage);
     g.unreachable += Number(s, "goals/unreachable").value_or(0.0);
     g.collisions += Number(s, "collisions").value_or(0.0);
+    if (const std::optional<double> ate = Number(s, "ate_rmse_m")) {
+      ++g.with_ate;
+      g.ate_sum += *ate;
+      g.ate_max = std::max(g.ate_max, *ate);
+    }
     if (path_99 && time_99) {
       ++g.reached;
       g.path_99 += *path_99;
       g.time_99 += *time_99;
     }
   }
-  AppendTable(
-      {"run", "world", "goal policy", "seed", "ended by", "coverage", "path m", "path to 99 % m",
-       "sim s", "sim s to 99 %", "goals", "reached", "unreachable", "collisions", "wall s"},
-      rows, out);
+  AppendTable({"run", "world", "goal policy", "seed", "ended by", "coverage", "path m",
+               "path to 99 % m", "sim s", "sim s to 99 %", "goals", "reached", "unreachable",
+               "collisions", "ATE m", "wall s", "× real time"},
+              rows, out);
   std::vector<Row> means;
   for (const auto& key : order) {
     const Group& g = groups[key];
     const auto mean_reached = [&](double sum) -> std::optional<double> {
       return g.reached > 0 ? std::optional<double>(sum / g.reached) : std::nullopt;
     };
-    means.push_back({key.first, key.second, std::to_string(g.runs), Percent(g.coverage / g.runs, 1),
-                     Percent(g.min_coverage, 1),
-                     std::to_string(g.reached) + " of " + std::to_string(g.runs),
-                     Fixed(mean_reached(g.path_99), 0), Fixed(mean_reached(g.time_99), 0),
-                     Count(g.unreachable), Count(g.collisions)});
+    means.push_back(
+        {key.first, key.second, std::to_string(g.runs), Percent(g.coverage / g.runs, 1),
+         Percent(g.min_coverage, 1), std::to_string(g.reached) + " of " + std::to_string(g.runs),
+         Fixed(mean_reached(g.path_99), 0), Fixed(mean_reached(g.time_99), 0), Count(g.unreachable),
+         Count(g.collisions),
+         Fixed(g.with_ate > 0 ? std::optional<double>(g.ate_sum / g.with_ate) : std::nullopt, 3),
+         Fixed(g.with_ate > 0 ? std::optional<double>(g.ate_max) : std::nullopt, 3)});
   }
   AppendTable({"world", "goal policy", "runs", "mean coverage", "min coverage", "reached 99 %",
-               "mean path to 99 % m", "mean sim s to 99 %", "unreachable goals", "collisions"},
+               "mean path to 99 % m", "mean sim s to 99 %", "unreachable goals", "collisions",
+               "mean ATE m", "max ATE m"},
               means, out);
 }
 

@@ -74,7 +74,8 @@ TEST(ResultsTables, ExploreRowsAndMeansPerWorldAndPolicy) {
                "time_to_coverage_s": {"0.99": )" +
             (done ? "500.0" : "null") +
             R"(}, "goals": {"issued": 20, "reached": 18, "unreachable": 1},
-               "collisions": 0})");
+               "collisions": 0, "ate_rmse_m": )" +
+            (done ? "0.04" : "0.1") + "}");
     WriteTextFileAtomically(dir / "coverage.csv",
                             "sim_time_s,path_length_m,coverage\n0,0,0\n400,200,0.8\n500,240," +
                                 std::string(done ? "0.995" : "0.8") + "\n");
@@ -89,13 +90,16 @@ TEST(ResultsTables, ExploreRowsAndMeansPerWorldAndPolicy) {
       << md;
   EXPECT_TRUE(Contains(md,
                        "| tables_explore_1 | office | scout | 1 | complete | 99.5 % | 250 | "
-                       "240 | 600 | 500 | 20 | 18 | 1 | 0 | 42 |"))
+                       "240 | 600 | 500 | 20 | 18 | 1 | 0 | 0.040 | 42 | 14.3 |"))
       << md;
   EXPECT_TRUE(Contains(md,
                        "| tables_explore_2 | office | scout | 2 | max_sim_time | 80.0 % | 250 "
                        "| — | 600 | — |"))
       << md;
-  EXPECT_TRUE(Contains(md, "| office | scout | 2 | 89.8 % | 80.0 % | 1 of 2 | 240 | 500 | 2 | 0 |"))
+  EXPECT_TRUE(
+      Contains(md,
+               "| office | scout | 2 | 89.8 % | 80.0 % | 1 of 2 | 240 | 500 | 2 | 0 | 0.070 | "
+               "0.100 |"))
       << md;
 }
 
