@@ -21,6 +21,7 @@ namespace scout::exploration {
 // from there counts. Space behind gaps narrower than the inflated robot is
 // excluded on purpose: Scout does not drive through them (ALGORITHMS §2), so
 // counting it would only measure the world, not the exploration.
+// Beyond the world's map is an obstacle, as in the simulator.
 class GroundTruth {
  public:
   // 'traversability' is the explorer's; 'robot_radius_m' the bare disc.
@@ -41,8 +42,9 @@ class GroundTruth {
   bool DiscCanReach(const Eigen::Vector2d& from, const Eigen::Vector2d& goal,
                     double tolerance_m) const;
 
+  // The world's limits grown by the one-cell ring of obstacles around it.
   const grid::MapLimits& limits() const { return limits_; }
-  // Row-major mask of the reachable free cells.
+  // Row-major mask of the reachable free cells, on limits().
   std::vector<uint8_t> ReachableMask() const;
 
  private:
@@ -50,6 +52,10 @@ class GroundTruth {
   // occupy (0: none). 4-connectivity equals the planner's 8-connected step
   // rule, which forbids cutting blocked corners.
   void LabelDiscComponents(const explore::PlanningMap& bare);
+  // The constructor's work, on the world already walled in.
+  GroundTruth(const grid::OccupancyMap& world, const std::string& world_name,
+              const Eigen::Vector2d& start, const explore::TraversabilityOptions& traversability,
+              double robot_radius_m, bool walled);
 
   grid::MapLimits limits_;
   double cell_area_m2_ = 0.0;

@@ -20,7 +20,7 @@ TEST(GroundTruthTest, ReachableAreaIsWhatTheDiscCoversAwayFromTheInflationBand) 
   EXPECT_GT(truth.reachable_free_m2(), 35.0);
   EXPECT_LT(truth.reachable_free_m2(), 48.0);
   const std::vector<uint8_t> mask = truth.ReachableMask();
-  const grid::MapLimits& l = w.map.limits;
+  const grid::MapLimits& l = truth.limits();
   EXPECT_TRUE(mask[l.FlatIndex(l.CellContaining({6.5, 1.5}))]);   // the right room
   EXPECT_FALSE(mask[l.FlatIndex(l.CellContaining({8.6, 5.6}))]);  // inside the closet
   EXPECT_FALSE(mask[l.FlatIndex(l.CellContaining({0.2, 3.0}))]);  // against the left wall
@@ -49,6 +49,20 @@ TEST(GroundTruthTest, MappedAreaCountsOnlyFreeCellsWhereTheWorldIsFree) {
   const double share = truth.MappedFreeM2(left, geometry::Rigid2d()) / truth.reachable_free_m2();
   EXPECT_GT(share, 0.4);
   EXPECT_LT(share, 0.6);
+}
+
+TEST(GroundTruthTest, BeyondTheMapIsAWallLikeInTheSimulator) {
+  // A 4 m x 3 m map that is free up to its border: the disc keeps its radius
+  // plus the safety margin (0.40 m) from the border, and covers all but 0.2 m.
+  sim::World w;
+  w.name = "open";
+  w.map.limits = grid::MapLimits(0.05, {0.0, 0.0}, 80, 60);
+  w.map.cells.assign(80 * 60, CellState::kFree);
+  w.start = {2.0, 1.5};
+  const GroundTruth truth = Truth(w);
+  EXPECT_NEAR(truth.reachable_free_m2(), (4.0 - 0.4) * (3.0 - 0.4), 0.1);
+  EXPECT_FALSE(truth.DiscCanReach({2.0, 1.5}, {0.1, 1.5}, 0.05));  // the disc would leave the map
+  EXPECT_TRUE(truth.DiscCanReach({2.0, 1.5}, {0.3, 1.5}, 0.05));
 }
 
 TEST(GroundTruthTest, TheDiscReachesTheOtherRoomButNotTheCloset) {
