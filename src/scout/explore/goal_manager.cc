@@ -121,10 +121,21 @@ void GoalManager::RefreshMap(const ExploreInput& in) {
   // Stuck places close their passages first; the cells the robot has driven
   // over open again, so closing never seals it into a room it entered.
   stuck_places_.RetryChangedGoals(*map_, in.submaps);
-  for (const Eigen::Vector2d& p : stuck_places_.Blacklisted(in.submaps)) {
+  const std::vector<Eigen::Vector2d> stuck = stuck_places_.Blacklisted(in.submaps);
+  for (const Eigen::Vector2d& p : stuck) {
     map_->CloseNarrow(p, options_.close_stuck_passage_radius_m);
   }
-  if (in.driven) map_->AllowDriven(*in.driven);
+  if (in.driven && stuck.empty()) {
+    map_->AllowDriven(*in.driven);
+  } else if (in.driven) {
+    // Where the robot stands counts as driven too: it backs up less than the
+    // closing radius, so it stands among closed cells, and the trajectory
+    // (SLAM nodes) may end short of it. Without this the office seed 5
+    // nearest-frontier run was sealed into a room corner after 200 s.
+    std::vector<Eigen::Vector2d> driven = *in.driven;
+    driven.push_back(in.robot_pose.translation());
+    map_->AllowDriven(driven);
+  }
   map_dirty_ = false;
   counters_.goals_retried += failed_.RetryChangedGoals(*map_, in.submaps);
   visited_.RetryChangedGoals(*map_, in.submaps);

@@ -410,6 +410,51 @@ TEST(GoalManagerTest, ANarrowPassageTheRobotGotStuckInIsClosed) {
   }
 }
 
+TEST(GoalManagerTest, ClosingWhereTheRobotGotStuckNeverSealsItWhereItStands) {
+  // A room (x < 20) with unknown space in its top-left corner, and a corridor
+  // 0.7 m wide (x 20-40, rows 13-19) toward unknown space at x > 40; with a
+  // 0.25 m safety margin its centre row is a narrow passage (0.4 m clear). The robot got stuck in
+  // the corridor at x = 34 and backed up 0.25 m. SLAM's nodes (the driven
+  // trajectory) end 0.95 m before where it stands.
+  MapBuilder b{60, 40};
+  b.Wall(0, 0, 59, 39).Fill(1, 1, 58, 38, grid::CellState::kUnknown).Free(1, 1, 40, 38);
+  b.Wall(20, 1, 40, 12).Wall(20, 20, 40, 38).Fill(1, 33, 6, 38, grid::CellState::kUnknown);
+  const std::vector<Eigen::Vector2d> frontier = b.FrontierPoints();
+  const std::vector<Eigen::Vector2d> driven = {b.At(5, 16), b.At(12, 16), b.At(17, 16),
+                                               b.At(22, 16)};
+  GoalManagerOptions o;  // stuck recovery and passage closing on
+  TraversabilityOptions traversability;
+  traversability.safety_margin_m = 0.25;
+  GoalManager gm(o, traversability, {}, {}, MakeGoalPolicy("nearest", {}));
+  gm.Start();
+  Eigen::Vector2d robot = b.At(34, 16);
+  const auto input = [&](double t, bool changed) {
+    ExploreInput in;
+    in.time_s = t;
+    in.robot_pose = geometry::Rigid2d(robot, 0.0);
+    in.map = &b.map();
+    in.frontier = &frontier;
+    in.map_changed = changed;
+    in.driven = &driven;
+    return in;
+  };
+  ExploreStatus s = gm.Update(input(0, true));
+  ASSERT_EQ(s.state, ExploreState::kDriving);
+  ASSERT_GE(s.goal->x(), b.At(40, 0).x() - 1e-9);  // the corridor's end, nearest
+  for (double t = 0.5; t <= o.stuck_timeout_s; t += 0.5) s = gm.Update(input(t, false));
+  ASSERT_EQ(gm.counters().recoveries, 1);
+  robot.x() -= 0.25;
+  s = gm.Update(input(o.stuck_timeout_s + 2.0, false));
+  s = gm.Update(input(o.stuck_timeout_s + 4.5, false));  // back-up timed out: failed
+  ASSERT_EQ(gm.counters().goals_failed, 1);
+  // The corridor's end stays closed, but the robot leaves the way it came, to
+  // the unknown corner of the room, instead of giving up.
+  s = gm.Update(input(o.stuck_timeout_s + 5.0, false));
+  ASSERT_EQ(s.state, ExploreState::kDriving);
+  ASSERT_TRUE(s.goal.has_value());
+  EXPECT_LT(s.goal->x(), b.At(10, 0).x());
+}
+
 TEST(GoalManagerTest, GoalIsKeptWhenASlightlyBetterOneAppearsAndSwitchedForAClearlyBetterOne) {
   Room room;
   GoalManagerOptions o;
