@@ -44,7 +44,21 @@ GroundTruth::GroundTruth(const grid::OccupancyMap& unwalled_world, const std::st
                          const explore::TraversabilityOptions& traversability,
                          double robot_radius_m)
     : GroundTruth(Walled(unwalled_world), world_name, start, traversability, robot_radius_m,
-                  /*walled=*/true) {}
+                  /*walled=*/true) {
+  // Back on the world's own lattice (the ring holds no reachable cell), so
+  // cell centres are computed exactly as the simulator's and coverage does
+  // not move by rounding at cell edges.
+  const grid::MapLimits& world = unwalled_world.limits;
+  for (grid::CellIndex& c : reachable_) c = {c.x - 1, c.y - 1};
+  std::vector<int32_t> labels(static_cast<size_t>(world.num_cells()), 0);
+  for (int y = 0; y < world.height(); ++y) {
+    for (int x = 0; x < world.width(); ++x) {
+      labels[world.FlatIndex({x, y})] = disc_component_[limits_.FlatIndex({x + 1, y + 1})];
+    }
+  }
+  disc_component_ = std::move(labels);
+  limits_ = world;
+}
 
 GroundTruth::GroundTruth(const grid::OccupancyMap& world, const std::string& world_name,
                          const Eigen::Vector2d& start,

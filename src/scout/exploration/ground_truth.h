@@ -42,7 +42,6 @@ class GroundTruth {
   bool DiscCanReach(const Eigen::Vector2d& from, const Eigen::Vector2d& goal,
                     double tolerance_m) const;
 
-  // The world's limits grown by the one-cell ring of obstacles around it.
   const grid::MapLimits& limits() const { return limits_; }
   // Row-major mask of the reachable free cells, on limits().
   std::vector<uint8_t> ReachableMask() const;

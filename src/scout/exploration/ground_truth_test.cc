@@ -20,7 +20,8 @@ TEST(GroundTruthTest, ReachableAreaIsWhatTheDiscCoversAwayFromTheInflationBand) 
   EXPECT_GT(truth.reachable_free_m2(), 35.0);
   EXPECT_LT(truth.reachable_free_m2(), 48.0);
   const std::vector<uint8_t> mask = truth.ReachableMask();
-  const grid::MapLimits& l = truth.limits();
+  const grid::MapLimits& l = w.map.limits;
+  EXPECT_EQ(truth.limits().num_cells(), l.num_cells());
   EXPECT_TRUE(mask[l.FlatIndex(l.CellContaining({6.5, 1.5}))]);   // the right room
   EXPECT_FALSE(mask[l.FlatIndex(l.CellContaining({8.6, 5.6}))]);  // inside the closet
   EXPECT_FALSE(mask[l.FlatIndex(l.CellContaining({0.2, 3.0}))]);  // against the left wall
