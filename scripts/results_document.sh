@@ -29,6 +29,9 @@ not_run() {
 # The last commit that changed what an explore run does. Runs whose summary
 # is older than it came from an earlier build; stale_runs NAME... lists them,
 # so a table never silently mixes builds.
+# Later changes were narrower and their runs were redone by hand: 6bdfb7b/ba663cd (reachable
+# area of maps free up to their border: mit-building-31, willow-garage) and 47468ec (only runs
+# in which the robot got stuck; a run without a stuck recovery is byte-identical).
 EXPLORE_BEHAVIOUR_COMMIT=ccc990f
 stale_runs() {
   local since name f
