@@ -9,6 +9,18 @@ namespace {
 
 using testing::MapBuilder;
 
+// What the exploration loop hands the goal manager at time 't'.
+ExploreInput InputAt(double t, const Eigen::Vector2d& robot, const grid::OccupancyMap& map,
+                     const std::vector<Eigen::Vector2d>& frontier, bool changed) {
+  ExploreInput in;
+  in.time_s = t;
+  in.robot_pose = geometry::Rigid2d(robot, 0.0);
+  in.map = &map;
+  in.frontier = &frontier;
+  in.map_changed = changed;
+  return in;
+}
+
 // A walled room, known free for x <= 40, unknown beyond: one frontier column.
 struct Room {
   MapBuilder b{60, 40};
@@ -18,13 +30,7 @@ struct Room {
     frontier = b.FrontierPoints();
   }
   ExploreInput Input(double t, const Eigen::Vector2d& robot, bool changed) const {
-    ExploreInput in;
-    in.time_s = t;
-    in.robot_pose = geometry::Rigid2d(robot, 0.0);
-    in.map = &b.map();
-    in.frontier = &frontier;
-    in.map_changed = changed;
-    return in;
+    return InputAt(t, robot, b.map(), frontier, changed);
   }
 };
 
@@ -429,12 +435,7 @@ TEST(GoalManagerTest, ClosingWhereTheRobotGotStuckNeverSealsItWhereItStands) {
   gm.Start();
   Eigen::Vector2d robot = b.At(34, 16);
   const auto input = [&](double t, bool changed) {
-    ExploreInput in;
-    in.time_s = t;
-    in.robot_pose = geometry::Rigid2d(robot, 0.0);
-    in.map = &b.map();
-    in.frontier = &frontier;
-    in.map_changed = changed;
+    ExploreInput in = InputAt(t, robot, b.map(), frontier, changed);
     in.driven = &driven;
     return in;
   };
