@@ -131,7 +131,10 @@ void GoalManager::RefreshMap(const ExploreInput& in) {
     // Where the robot stands counts as driven too: it backs up less than the
     // closing radius, so it stands among closed cells, and the trajectory
     // (SLAM nodes) may end short of it. Without this the office seed 5
-    // nearest-frontier run was sealed into a room corner after 200 s.
+    // nearest-frontier run was sealed into a room corner after 200 s. Only
+    // while a stuck place is closed: otherwise the start region's escape
+    // already leaves blocked cells, and runs without a stuck recovery keep
+    // exactly the map they had.
     std::vector<Eigen::Vector2d> driven = *in.driven;
     driven.push_back(in.robot_pose.translation());
     map_->AllowDriven(driven);
