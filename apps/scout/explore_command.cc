@@ -96,6 +96,7 @@ nlohmann::json Summary(const ExploreArgs& args, const exploration::ExplorationLo
   s["coverage"] = r.coverage;
   s["mapped_free_m2"] = r.mapped_free_m2;
   s["reachable_free_m2"] = r.reachable_free_m2;
+  s["map_free_m2"] = r.map_free_m2;
   s["path_length_m"] = r.path_length_m;
   s["sim_time_s"] = r.sim_time_s;
   s["wall_time_s"] = wall_time_s;

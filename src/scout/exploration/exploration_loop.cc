@@ -152,8 +152,12 @@ void ExplorationLoop::MeasureCoverage() {
       result_.time_to_coverage_s[i] = t;
     }
   }
-  if (result_.coverage >= best_coverage_ + options_.explore.min_coverage_gain) {
-    best_coverage_ = result_.coverage;
+  const int64_t free_cells =
+      std::count(fused_map_.cells.begin(), fused_map_.cells.end(), grid::CellState::kFree);
+  const double cell_m = fused_map_.limits.resolution();
+  result_.map_free_m2 = static_cast<double>(free_cells) * cell_m * cell_m;
+  if (result_.map_free_m2 >= best_map_free_m2_ + options_.explore.min_map_gain_m2) {
+    best_map_free_m2_ = result_.map_free_m2;
     last_gain_s_ = t;
   }
 }

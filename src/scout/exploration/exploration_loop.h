@@ -25,7 +25,7 @@ namespace scout::exploration {
 enum class Termination {
   kComplete,    // the goal manager found no frontier left (and came home, if asked)
   kMaxSimTime,  // explore.max_sim_time_s passed
-  kNoProgress,  // coverage stopped growing for explore.no_progress_timeout_s, or
+  kNoProgress,  // the robot's map stopped growing for explore.no_progress_timeout_s, or
                 // frontier points remained that no goal could reach
 };
 std::string_view ToString(Termination termination);
@@ -77,6 +77,8 @@ struct ExplorationResult {
   double coverage = 0.0;
   double mapped_free_m2 = 0.0;
   double reachable_free_m2 = 0.0;
+  // Known free area of the robot's own fused map (what it believes it mapped).
+  double map_free_m2 = 0.0;
   double path_length_m = 0.0;
   double sim_time_s = 0.0;
   // First sim time coverage reached each of kCoverageThresholds (if it did).
@@ -184,7 +186,7 @@ class ExplorationLoop {
   std::vector<explore::SubmapPose> submap_poses_;
 
   ExplorationResult result_;
-  double best_coverage_ = 0.0;
+  double best_map_free_m2_ = 0.0;
   double last_gain_s_ = 0.0;
 };
 

@@ -51,8 +51,8 @@ void CheckExplorationOptions(const ExplorationOptions& options) {
   if (!(e.initial_turn_rad >= 0.0) || !std::isfinite(e.initial_turn_rad)) {
     throw InputError("explore.initial_turn_deg: expected a finite value >= 0");
   }
-  if (!(e.min_coverage_gain >= 0.0 && e.min_coverage_gain < 1.0)) {
-    throw InputError("explore.min_coverage_gain: expected a value in [0, 1)");
+  if (!(e.min_map_gain_m2 >= 0.0) || !std::isfinite(e.min_map_gain_m2)) {
+    throw InputError("explore.min_map_gain_m2: expected a finite value >= 0");
   }
   if (!(e.complete_max_reachable_frontier_m >= 0.0) ||
       !std::isfinite(e.complete_max_reachable_frontier_m)) {

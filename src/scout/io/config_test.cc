@@ -45,6 +45,8 @@ TEST_F(ConfigTest, SlamSectionOfTheDefaultFileMatchesTheBuiltInDefaults) {
               d.local.real_time_correlative_scan_matcher.angular_search_window_rad, 1e-12);
   EXPECT_DOUBLE_EQ(c.local.ceres_scan_matcher.occupied_space_weight,
                    d.local.ceres_scan_matcher.occupied_space_weight);
+  EXPECT_EQ(c.local.ceres_scan_matcher.full_weight_num_points,
+            d.local.ceres_scan_matcher.full_weight_num_points);
   EXPECT_DOUBLE_EQ(c.local.ceres_scan_matcher.translation_weight,
                    d.local.ceres_scan_matcher.translation_weight);
   EXPECT_DOUBLE_EQ(c.local.ceres_scan_matcher.rotation_weight,

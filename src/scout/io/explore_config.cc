@@ -104,7 +104,7 @@ void ReadExploreOptions(YamlSection s, exploration::ExploreOptions* o) {
   s.ReadPositive("dt_s", &o->dt_s);
   s.ReadPositive("max_sim_time_s", &o->max_sim_time_s);
   s.ReadPositive("no_progress_timeout_s", &o->no_progress_timeout_s);
-  s.ReadNonNegative("min_coverage_gain", &o->min_coverage_gain);
+  s.ReadNonNegative("min_map_gain_m2", &o->min_map_gain_m2);
   s.ReadNonNegative("complete_max_reachable_frontier_m", &o->complete_max_reachable_frontier_m);
   s.ReadPositive("map_update_interval_s", &o->map_update_interval_s);
   s.ReadPositive("coverage_interval_s", &o->coverage_interval_s);

@@ -22,6 +22,7 @@ TEST_F(ExploreConfigTest, DefaultFileMatchesTheBuiltInDefaults) {
   EXPECT_DOUBLE_EQ(c.explore.dt_s, d.explore.dt_s);
   EXPECT_DOUBLE_EQ(c.explore.max_sim_time_s, d.explore.max_sim_time_s);
   EXPECT_DOUBLE_EQ(c.explore.no_progress_timeout_s, d.explore.no_progress_timeout_s);
+  EXPECT_DOUBLE_EQ(c.explore.min_map_gain_m2, d.explore.min_map_gain_m2);
   EXPECT_DOUBLE_EQ(c.explore.map_update_interval_s, d.explore.map_update_interval_s);
   EXPECT_NEAR(c.explore.initial_turn_rad, d.explore.initial_turn_rad, 1e-12);
   EXPECT_EQ(c.explore.synchronous_slam, d.explore.synchronous_slam);
@@ -81,6 +82,11 @@ TEST_F(ExploreConfigTest, ValuesAreReadWithTheirUnits) {
 
 TEST_F(ExploreConfigTest, ErrorsNameTheKey) {
   EXPECT_NE(ErrorOf("explore:\n  dt_s: -1\n").find("explore.dt_s"), std::string::npos);
+  EXPECT_NE(ErrorOf("explore:\n  min_map_gain_m2: -1\n").find("explore.min_map_gain_m2"),
+            std::string::npos);
+  // The stall rule's old key, on coverage, is gone: named as unknown.
+  EXPECT_NE(ErrorOf("explore:\n  min_coverage_gain: 0.001\n").find("explore.min_coverage_gain"),
+            std::string::npos);
   EXPECT_NE(ErrorOf("explore:\n  goals:\n    no_such_key: 1\n").find("explore.goals.no_such_key"),
             std::string::npos);
   EXPECT_NE(ErrorOf("robot:\n  lidar:\n    beams: 1\n").find("robot.lidar.beams"),

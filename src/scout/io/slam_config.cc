@@ -26,6 +26,7 @@ void ReadCeresScanMatcher(YamlSection s, slam::CeresScanMatcherOptions* o) {
   s.ReadNonNegative("translation_weight", &o->translation_weight);
   s.ReadNonNegative("rotation_weight", &o->rotation_weight);
   s.ReadInt("max_num_iterations", &o->max_num_iterations, 1);
+  s.ReadInt("full_weight_num_points", &o->full_weight_num_points, 0);
   s.ReadPositive("unknown_probability", &o->unknown_probability);
   s.RejectUnknownKeys();
 }

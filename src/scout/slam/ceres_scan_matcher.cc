@@ -3,6 +3,7 @@
 #include <ceres/ceres.h>
 #include <ceres/cubic_interpolation.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -108,6 +109,8 @@ void Validate(const CeresScanMatcherOptions& options) {
   CheckOption(options.unknown_probability >= grid::kMinProbability - 1e-6 &&
                   options.unknown_probability <= grid::kMaxProbability + 1e-6,
               "unknown_probability", options.unknown_probability, "in [0.1, 0.9]");
+  CheckOption(options.full_weight_num_points >= 0, "full_weight_num_points",
+              options.full_weight_num_points, ">= 0");
   CheckOption(options.max_num_iterations >= 1, "max_num_iterations", options.max_num_iterations,
               ">= 1");
 }
@@ -124,8 +127,9 @@ geometry::Rigid2d CeresScanMatcher::Match(const Eigen::Vector2d& target_translat
   double pose[3] = {initial_pose_estimate.x(), initial_pose_estimate.y(),
                     initial_pose_estimate.theta()};
   ceres::Problem problem;
-  const double scale =
-      options_.occupied_space_weight / std::sqrt(static_cast<double>(points.size()));
+  const double num_points_for_weight =
+      std::max(points.size(), static_cast<size_t>(options_.full_weight_num_points));
+  const double scale = options_.occupied_space_weight / std::sqrt(num_points_for_weight);
   problem.AddResidualBlock(
       new ceres::AutoDiffCostFunction<OccupiedSpaceCost, ceres::DYNAMIC, 3>(
           new OccupiedSpaceCost(scale, points, grid, options_.unknown_probability),

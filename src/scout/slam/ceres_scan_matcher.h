@@ -10,8 +10,14 @@
 namespace scout::slam {
 
 struct CeresScanMatcherOptions {
-  // Scale of the per-point residuals (1 - p) / sqrt(N).
+  // Scale of the per-point residuals (1 - p) / sqrt(max(N, full_weight_num_points)).
   double occupied_space_weight = 1.0;
+  // Scans with fewer points than this pull with only N / full_weight_num_points
+  // of the full occupied-space weight, so the priors hold them. Dividing by
+  // sqrt(N) alone (Cartographer) gives two returns as much pull as two hundred:
+  // in the simulated museum's halls, scans of 1-6 returns turned local SLAM by
+  // up to 9 degrees in one scan. 0 = sqrt(N) for every scan.
+  int full_weight_num_points = 0;
   // Scale of the residual pulling the translation toward the target (per metre).
   double translation_weight = 10.0;
   // Scale of the residual pulling the rotation toward the initial estimate's (per radian).

@@ -39,7 +39,11 @@ struct LocalSlamOptions {
   // the correlative result, which is only cell- and step-accurate, and at 10 /
   // 40 they held the pose there (fr079 bag without loop closures, first 2000
   // scans: ATE 1.26 m -> 0.08 m, 1 s RPE 0.110 m / 1.45 deg -> 0.038 m / 0.78 deg).
+  // Scans of fewer than 50 points pull with their share of the weight (see
+  // full_weight_num_points); the eight replayed logs give the same ATE to
+  // four decimals either way.
   CeresScanMatcherOptions ceres_scan_matcher{.occupied_space_weight = 1.0,
+                                             .full_weight_num_points = 50,
                                              .translation_weight = 1.0,
                                              .rotation_weight = 1.0,
                                              .max_num_iterations = 20};

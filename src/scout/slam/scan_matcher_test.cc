@@ -121,12 +121,47 @@ TEST(CeresScanMatcherTest, UnknownAtHalfDoesNotPullScansBackIntoMappedSpace) {
   EXPECT_LT(std::abs(lag_half_m), 0.5 * lag_minimum_m);
 }
 
+// A scan of three returns, 0.1 rad off a prior it disagrees with: divided by
+// sqrt(3) alone its three residuals weigh as much as a full scan's and turn
+// the pose most of the way; with full_weight_num_points the prior holds it.
+// Scans with at least that many points match exactly as before.
+TEST(CeresScanMatcherTest, FewReturnsPullWithTheirShareOfTheFullWeight) {
+  const grid::ProbabilityGrid grid = testing::RoomGrid();
+  const Rigid2d truth(0.3, -0.2, -0.4);
+  const PointCloud all_points = testing::ScanPoints(testing::Room(), truth);
+  ASSERT_GE(all_points.size(), 50u);
+  const PointCloud few = {all_points[all_points.size() / 4], all_points[all_points.size() / 2],
+                          all_points[3 * all_points.size() / 4]};
+  const Rigid2d prior(truth.x(), truth.y(), truth.theta() + 0.1);
+  CeresScanMatcherOptions options;
+  options.translation_weight = 5.0;
+  options.rotation_weight = 1.0;
+  const Rigid2d sqrt_n = CeresScanMatcher(options).Match(prior.translation(), prior, few, grid);
+  options.full_weight_num_points = 50;
+  const Rigid2d shared = CeresScanMatcher(options).Match(prior.translation(), prior, few, grid);
+  EXPECT_GT(AngleError(sqrt_n, prior), 0.05) << sqrt_n;
+  EXPECT_LT(AngleError(shared, prior), 0.02) << shared;
+
+  const Rigid2d full_prior(truth.x() + 0.03, truth.y(), truth.theta() + 0.03);
+  options.full_weight_num_points = static_cast<int>(all_points.size());
+  const Rigid2d full_shared =
+      CeresScanMatcher(options).Match(full_prior.translation(), full_prior, all_points, grid);
+  options.full_weight_num_points = 0;
+  const Rigid2d full_sqrt_n =
+      CeresScanMatcher(options).Match(full_prior.translation(), full_prior, all_points, grid);
+  EXPECT_EQ(full_shared.translation(), full_sqrt_n.translation());
+  EXPECT_EQ(full_shared.theta(), full_sqrt_n.theta());
+}
+
 TEST(CeresScanMatcherTest, RejectsInvalidOptions) {
   CeresScanMatcherOptions options;
   options.max_num_iterations = 0;
   EXPECT_THROW(CeresScanMatcher{options}, std::invalid_argument);
   options = {};
   options.occupied_space_weight = std::nan("");
+  EXPECT_THROW(CeresScanMatcher{options}, std::invalid_argument);
+  options = {};
+  options.full_weight_num_points = -1;
   EXPECT_THROW(CeresScanMatcher{options}, std::invalid_argument);
 }
 
