@@ -29,10 +29,9 @@ not_run() {
 # The last commit that changed what an explore run does. Runs whose summary
 # is older than it came from an earlier build; stale_runs NAME... lists them,
 # so a table never silently mixes builds.
-# Later changes were narrower and their runs were redone by hand: 6bdfb7b/ba663cd (reachable
-# area of maps free up to their border: mit-building-31, willow-garage) and 47468ec (only runs
-# in which the robot got stuck; a run without a stuck recovery is byte-identical).
-EXPLORE_BEHAVIOUR_COMMIT=ccc990f
+# aa01b49: explore's local SLAM (rotation prior 10, few-return scans weighted down) and the
+# no_progress rule (the robot's own map instead of the true coverage).
+EXPLORE_BEHAVIOUR_COMMIT=aa01b49
 stale_runs() {
   local since name f
   since=$(git log -1 --format=%ct "$EXPLORE_BEHAVIOUR_COMMIT" 2>/dev/null) || return 0
@@ -155,13 +154,14 @@ write_document() {
     echo "estimated trajectory against the simulator's. A run ends \`complete\` when no navigation"
     echo "point is left and at most 0.5 m of frontier a plan reaches remains away from goals the"
     echo "robot reached (frontier that stayed where it went is counted as \`visited_frontier_left\`),"
-    echo "\`no_progress\` when the policy gave up on reachable frontier or coverage stalled for 300 s."
+    echo "\`no_progress\` when the policy gave up on reachable frontier or the robot's own map gained"
+    echo "less than 1 m² of free area in 300 s (\`max_sim_time\` after 3600 s of simulated time)."
     echo
     local stale
     stale=$(stale_runs "${EXPLORE[@]}")
     if [[ -n $stale ]]; then
       echo "Made with a build older than commit $EXPLORE_BEHAVIOUR_COMMIT, which changed what every"
-      echo "policy's robot does (collision guard steering, stuck passages closed), so not like-for-like"
+      echo "policy's robot does (local SLAM's heading prior, the no_progress rule), so not like-for-like"
       echo "with the other runs: $stale"
       echo
     fi

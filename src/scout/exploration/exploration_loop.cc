@@ -1,6 +1,7 @@
 #include "scout/exploration/exploration_loop.h"
 
 #include <algorithm>
+#include <limits>
 #include <utility>
 
 #include "scout/frontier/stopwatch.h"
@@ -162,19 +163,40 @@ void ExplorationLoop::MeasureCoverage() {
   }
 }
 
+// A point of the map lies in the true world where the map around it puts it:
+// relative to the true pose of the SLAM node nearest to it, as it lies
+// relative to that node's estimate (the scans that mapped it). Relative to the
+// robot's current pose instead, the heading error between the robot's
+// surroundings and the goal's grows with the distance: office seed 1 sent the
+// robot to a target 30 m away that this placed against a desk's corner, too
+// close for the disc. (The start alignment world_from_map_ is worse: it adds
+// the drift loop closures later remove.)
+Eigen::Vector2d ExplorationLoop::MapPointInWorld(const Eigen::Vector2d& point_map) const {
+  const std::vector<slam::TimedPose> nodes = builder_->GetTrajectory();
+  const slam::TimedPose* nearest = nullptr;
+  double best_m2 = std::numeric_limits<double>::infinity();
+  for (const slam::TimedPose& node : nodes) {
+    const double d2 = (node.pose.translation() - point_map).squaredNorm();
+    if (d2 < best_m2) best_m2 = d2, nearest = &node;
+  }
+  if (nearest != nullptr) {
+    // Nodes are scans, and the truth holds the robot's pose at every scan.
+    const auto it = std::lower_bound(
+        result_.truth.begin(), result_.truth.end(), nearest->time_s,
+        [](const slam::TimedPose& truth, double time_s) { return truth.time_s < time_s; });
+    if (it != result_.truth.end() && it->time_s == nearest->time_s) {
+      return it->pose * (nearest->pose.inverse() * point_map);
+    }
+  }
+  return robot_.true_pose() * (EstimatedPose().inverse() * point_map);
+}
+
 void ExplorationLoop::RecordIssuedGoal(const Eigen::Vector2d& goal_map,
                                        const Eigen::Vector2d& target_map) {
   IssuedGoal g;
   g.sim_time_s = robot_.sim_time_s();
-  // The robot drives to the goal relative to where it believes it is, so
-  // that is where the goal lies in the true world: relative to its true
-  // pose. (The start alignment world_from_map_ would misplace every goal by
-  // the map's drift at the time, which loop closures only later remove: in
-  // one office seed 1 run, all 6 targets it judged unreachable, "inside"
-  // furniture, were reachable judged this way.)
-  const geometry::Rigid2d world_from_estimate = robot_.true_pose() * EstimatedPose().inverse();
-  g.goal_world = world_from_estimate * goal_map;
-  g.target_world = world_from_estimate * target_map;
+  g.goal_world = MapPointInWorld(goal_map);
+  g.target_world = MapPointInWorld(target_map);
   g.robot_world = robot_.true_pose().translation();
   // Reached means within the follower's tolerance, so that is the slack.
   const double tolerance_m = options_.explore.follower.goal_tolerance_m;
