@@ -30,9 +30,10 @@ not_run() {
 # is older than it came from an earlier build; stale_runs NAME... lists them,
 # so a table never silently mixes builds.
 # aa01b49: explore's local SLAM (rotation prior 10, few-return scans weighted down) and the
-# no_progress rule (the robot's own map instead of the true coverage); 788726d: where an
-# issued goal lies in the true world (the unreachable count).
-EXPLORE_BEHAVIOUR_COMMIT=788726d
+# no_progress rule (the robot's own map instead of the true coverage); then how runs are
+# scored: where an issued goal lies in the true world (the unreachable count) and the map
+# placed by the rigid fit of the trajectory (coverage).
+EXPLORE_BEHAVIOUR_COMMIT=COMMIT_PLACEHOLDER
 stale_runs() {
   local since name f
   since=$(git log -1 --format=%ct "$EXPLORE_BEHAVIOUR_COMMIT" 2>/dev/null) || return 0

@@ -41,8 +41,10 @@ struct IssuedGoal {
   double sim_time_s = 0.0;
   // The navigation point, and where the robot was sent for it (the stand-off
   // point before it, or the point itself; GoalManagerOptions::max_stand_off_m),
-  // placed in the world relative to the true pose of the SLAM node nearest to
-  // each as they were relative to that node's estimate.
+  // placed in the world relative to the robot's true pose as they were
+  // relative to its estimate when within the lidar's range, else relative to
+  // the true pose of the SLAM node nearest to each as they were relative to
+  // that node's estimate.
   Eigen::Vector2d goal_world = Eigen::Vector2d::Zero();
   Eigen::Vector2d target_world = Eigen::Vector2d::Zero();
   Eigen::Vector2d robot_world = Eigen::Vector2d::Zero();  // true position then
@@ -150,6 +152,8 @@ class ExplorationLoop {
   geometry::Rigid2d EstimatedPose() const;
   // Where a point of the estimated map lies in the true world (see the .cc).
   Eigen::Vector2d MapPointInWorld(const Eigen::Vector2d& point_map) const;
+  // Where coverage places the fused map in the world (see the .cc).
+  geometry::Rigid2d CoverageAlignment() const;
   // Rebuilds the fused map and frontier if SLAM changed them and the interval
   // has passed; returns true if it did.
   bool MaybeUpdateMap(bool force);

@@ -2,6 +2,8 @@
 #include <rapidcheck/gtest.h>
 
 #include <numbers>
+#include <stdexcept>
+#include <vector>
 
 #include "scout/geometry/box.h"
 #include "scout/geometry/rigid_transform.h"
@@ -73,6 +75,18 @@ TEST(Box2d, EmptyBoxNeitherContainsNorIntersects) {
   EXPECT_FALSE(empty.Contains({0, 0}));
   EXPECT_FALSE(empty.Intersects(Box2d({-1, -1}, {1, 1})));
   EXPECT_DOUBLE_EQ(Box2d({0, 0}, {1, 1}).DistanceTo({4, 5}), 5.0);
+}
+
+TEST(FitRigid2d, RecoversAKnownTransformAndRejectsUnpairedPoints) {
+  const Rigid2d truth(2.0, -1.0, 0.3);
+  const std::vector<Eigen::Vector2d> from = {{0, 0}, {4, 0}, {4, 3}, {1, 5}};
+  std::vector<Eigen::Vector2d> to;
+  for (const Eigen::Vector2d& p : from) to.push_back(truth * p);
+  const Rigid2d fit = FitRigid2d(from, to);
+  EXPECT_NEAR(fit.theta(), 0.3, 1e-12);
+  EXPECT_NEAR((fit.translation() - truth.translation()).norm(), 0.0, 1e-12);
+  EXPECT_EQ(FitRigid2d({}, {}).translation(), Eigen::Vector2d::Zero());
+  EXPECT_THROW(FitRigid2d(from, {to[0]}), std::invalid_argument);
 }
 
 }  // namespace

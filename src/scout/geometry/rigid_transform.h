@@ -4,6 +4,7 @@
 #include <Eigen/Core>
 #include <cmath>
 #include <ostream>
+#include <vector>
 
 namespace scout::geometry {
 
@@ -72,6 +73,14 @@ std::ostream& operator<<(std::ostream& os, const Rigid2d& t);
 // Returns the largest distance any point within 'radius_m' of 'center' moves
 // under 'delta' (a transform applied in the same frame as 'center').
 double MaxDisplacementWithin(const Rigid2d& delta, const Eigen::Vector2d& center, double radius_m);
+
+// Returns the rigid transform T (rotation and translation, no scale) that
+// minimises sum_i |T * from[i] - to[i]|^2, in closed form (2D Kabsch/Umeyama:
+// centroids, then the angle of the summed cross products over the summed dot
+// products). Identity for no points; a pure translation for one point or when
+// all 'from' points coincide. Throws std::invalid_argument for sizes that differ.
+Rigid2d FitRigid2d(const std::vector<Eigen::Vector2d>& from,
+                   const std::vector<Eigen::Vector2d>& to);
 
 }  // namespace scout::geometry
 

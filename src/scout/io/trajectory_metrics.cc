@@ -16,28 +16,13 @@ constexpr double kMaxStepStretch = 1.5;
 }  // namespace
 
 geometry::Rigid2d AlignRigid2d(const std::vector<PosePair>& pairs) {
-  if (pairs.empty()) return geometry::Rigid2d::Identity();
-  Eigen::Vector2d mean_est = Eigen::Vector2d::Zero();
-  Eigen::Vector2d mean_ref = Eigen::Vector2d::Zero();
+  std::vector<Eigen::Vector2d> estimate;
+  std::vector<Eigen::Vector2d> reference;
   for (const PosePair& p : pairs) {
-    mean_est += p.estimate.translation();
-    mean_ref += p.reference.translation();
+    estimate.push_back(p.estimate.translation());
+    reference.push_back(p.reference.translation());
   }
-  mean_est /= static_cast<double>(pairs.size());
-  mean_ref /= static_cast<double>(pairs.size());
-  // The optimal angle maximises sum(ref_c . R e_c), i.e. it is the angle of
-  // (sum of dot products, sum of cross products) of the centred positions.
-  double dot = 0.0;
-  double cross = 0.0;
-  for (const PosePair& p : pairs) {
-    const Eigen::Vector2d e = p.estimate.translation() - mean_est;
-    const Eigen::Vector2d r = p.reference.translation() - mean_ref;
-    dot += e.x() * r.x() + e.y() * r.y();
-    cross += e.x() * r.y() - e.y() * r.x();
-  }
-  const double theta = (dot == 0.0 && cross == 0.0) ? 0.0 : std::atan2(cross, dot);
-  const geometry::Rigid2d rotation(0.0, 0.0, theta);
-  return geometry::Rigid2d(mean_ref - rotation.Rotate(mean_est), theta);
+  return geometry::FitRigid2d(estimate, reference);
 }
 
 RelativePoseError ComputeRelativePoseError(const std::vector<PosePair>& time_sorted_pairs,

@@ -15,10 +15,9 @@ struct PosePair {
 };
 
 // Returns the rigid transform T (rotation and translation, no scale) that
-// minimises sum_i |T * estimate_i.translation - reference_i.translation|^2, in
-// closed form (2D Kabsch/Umeyama: centroids, then the angle of the summed
-// cross products over the summed dot products). Identity for no pairs; a pure
-// translation for one pair or when all estimate positions coincide.
+// minimises sum_i |T * estimate_i.translation - reference_i.translation|^2
+// (geometry::FitRigid2d). Identity for no pairs; a pure translation for one
+// pair or when all estimate positions coincide.
 geometry::Rigid2d AlignRigid2d(const std::vector<PosePair>& pairs);
 
 // Trajectory accuracy, the usual definitions (Sturm et al., IROS 2012):
