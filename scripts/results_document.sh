@@ -33,7 +33,7 @@ not_run() {
 # no_progress rule (the robot's own map instead of the true coverage); then how runs are
 # scored: where an issued goal lies in the true world (the unreachable count) and the map
 # placed by the rigid fit of the trajectory (coverage).
-EXPLORE_BEHAVIOUR_COMMIT=COMMIT_PLACEHOLDER
+EXPLORE_BEHAVIOUR_COMMIT=d9186d8
 stale_runs() {
   local since name f
   since=$(git log -1 --format=%ct "$EXPLORE_BEHAVIOUR_COMMIT" 2>/dev/null) || return 0
