@@ -165,7 +165,8 @@ write_document() {
     stale=$(stale_runs "${EXPLORE[@]}")
     if [[ -n $stale ]]; then
       echo "Made with a build older than commit $EXPLORE_BEHAVIOUR_COMMIT, which changed what every"
-      echo "policy's robot does (local SLAM's heading prior, the no_progress rule), so not like-for-like"
+      echo "policy's robot does (local SLAM's heading prior, the no_progress rule) and how runs are"
+      echo "scored (coverage placed by the trajectory fit, where goals lie), so not like-for-like"
       echo "with the other runs: $stale"
       echo
     fi
