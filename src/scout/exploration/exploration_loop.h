@@ -75,7 +75,8 @@ struct LoopTimings {
 
 struct ExplorationResult {
   Termination terminated = Termination::kMaxSimTime;
-  // Mapped reachable free area / reachable free area (see GroundTruth).
+  // Mapped reachable free area / reachable free area (see GroundTruth), the
+  // map placed by the rigid fit of the SLAM nodes to the truth.
   double coverage = 0.0;
   double mapped_free_m2 = 0.0;
   double reachable_free_m2 = 0.0;
