@@ -130,15 +130,14 @@ bool ExplorationLoop::MaybeUpdateMap(bool force) {
     submap_poses_.push_back({id, submaps[i].global_pose});
   }
   fused_map_ = fusion_.Update(inputs);
+  const std::vector<slam::TimedPose> nodes = builder_->GetTrajectory();
   driven_.clear();
-  for (const slam::TimedPose& node : builder_->GetTrajectory()) {
-    driven_.push_back(node.pose.translation());
-  }
+  for (const slam::TimedPose& node : nodes) driven_.push_back(node.pose.translation());
   // Grid changes are deferred by the engine (FrontierOptions::
   // defer_grid_changes); apply them now that the frontier is needed.
   engine_.Flush();
   frontier_ = engine_.GlobalFrontier(options_.explore.strategy);
-  MeasureCoverage();
+  MeasureCoverage(nodes);
   result_.timings.map_fusion_s += watch.ElapsedUs() * 1e-6;
   return true;
 }
@@ -150,8 +149,8 @@ bool ExplorationLoop::MaybeUpdateMap(bool force) {
 // map lay 0.4-2.7 degrees off the start alignment, and the final coverage
 // was 0.941-0.998 against it but 0.997-1.000 fitted. Until the nodes spread
 // over a metre (the turn on the spot) the rotation is undetermined: the start.
-geometry::Rigid2d ExplorationLoop::CoverageAlignment() const {
-  const std::vector<slam::TimedPose> nodes = builder_->GetTrajectory();
+geometry::Rigid2d ExplorationLoop::CoverageAlignment(
+    const std::vector<slam::TimedPose>& nodes) const {
   std::vector<Eigen::Vector2d> estimate;
   std::vector<Eigen::Vector2d> truth;
   auto it = result_.truth.begin();
@@ -175,10 +174,10 @@ geometry::Rigid2d ExplorationLoop::CoverageAlignment() const {
   return geometry::FitRigid2d(estimate, truth);
 }
 
-void ExplorationLoop::MeasureCoverage() {
+void ExplorationLoop::MeasureCoverage(const std::vector<slam::TimedPose>& nodes) {
   const double t = robot_.sim_time_s();
   result_.reachable_free_m2 = truth_.reachable_free_m2();
-  result_.mapped_free_m2 = truth_.MappedFreeM2(fused_map_, CoverageAlignment());
+  result_.mapped_free_m2 = truth_.MappedFreeM2(fused_map_, CoverageAlignment(nodes));
   result_.coverage = result_.mapped_free_m2 / result_.reachable_free_m2;
   for (size_t i = 0; i < std::size(kCoverageThresholds); ++i) {
     if (!result_.time_to_coverage_s[i] && result_.coverage >= kCoverageThresholds[i]) {
@@ -204,13 +203,14 @@ void ExplorationLoop::MeasureCoverage() {
 // corner, too close for the disc. (The start alignment world_from_map_ is
 // worse: it adds the drift loop closures later remove.)
 Eigen::Vector2d ExplorationLoop::MapPointInWorld(const Eigen::Vector2d& point_map) const {
-  const geometry::Rigid2d world_from_estimate = robot_.true_pose() * EstimatedPose().inverse();
+  const geometry::Rigid2d estimate = EstimatedPose();
+  const geometry::Rigid2d world_from_estimate = robot_.true_pose() * estimate.inverse();
   // Within the lidar's range the robot sees the goal's surroundings now and
   // drives there localised in them: its own pose is the reference. (An old
   // node is not: on mit-building-31 seeds 2, 4 and 5, frontier 2-4 m from
   // the robot lay in submaps a loop closure had not yet joined to the old
   // ones, whose nodes put the targets a metre beyond the outer wall.)
-  if ((point_map - EstimatedPose().translation()).norm() <= options_.robot.lidar.range_max_m) {
+  if ((point_map - estimate.translation()).norm() <= options_.robot.lidar.range_max_m) {
     return world_from_estimate * point_map;
   }
   const std::vector<slam::TimedPose> nodes = builder_->GetTrajectory();

@@ -153,12 +153,14 @@ class ExplorationLoop {
   geometry::Rigid2d EstimatedPose() const;
   // Where a point of the estimated map lies in the true world (see the .cc).
   Eigen::Vector2d MapPointInWorld(const Eigen::Vector2d& point_map) const;
-  // Where coverage places the fused map in the world (see the .cc).
-  geometry::Rigid2d CoverageAlignment() const;
+  // Where coverage places the fused map in the world, given SLAM's current
+  // nodes (see the .cc).
+  geometry::Rigid2d CoverageAlignment(const std::vector<slam::TimedPose>& nodes) const;
   // Rebuilds the fused map and frontier if SLAM changed them and the interval
   // has passed; returns true if it did.
   bool MaybeUpdateMap(bool force);
-  void MeasureCoverage();
+  // Coverage and the robot's own mapped area; 'nodes' are SLAM's current ones.
+  void MeasureCoverage(const std::vector<slam::TimedPose>& nodes);
   void RecordIssuedGoal(const Eigen::Vector2d& goal_map, const Eigen::Vector2d& target_map);
   std::optional<Termination> CheckTermination(const explore::ExploreStatus& status) const;
 
