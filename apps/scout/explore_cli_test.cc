@@ -113,8 +113,8 @@ TEST_F(ExploreCli, ExploresASmallMapAndWritesEveryOutput) {
   EXPECT_GE(s["coverage"].get<double>(), 0.97);
   EXPECT_NEAR(s["coverage"].get<double>(),
               s["mapped_free_m2"].get<double>() / s["reachable_free_m2"].get<double>(), 1e-9);
-  // The robot's own map holds the truly mapped area, and at most a thin margin
-  // more (free cells at the walls' edges, the lidar seeing through no gap here).
+  // The robot's own free area holds the truly mapped area, and little more:
+  // free cells at the walls' edges that the truth counts as wall.
   EXPECT_GE(s["map_free_m2"].get<double>(), 0.97 * s["mapped_free_m2"].get<double>());
   EXPECT_LE(s["map_free_m2"].get<double>(), 1.3 * s["reachable_free_m2"].get<double>());
   EXPECT_EQ(s["collisions"], 0);

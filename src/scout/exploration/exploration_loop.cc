@@ -142,6 +142,15 @@ bool ExplorationLoop::MaybeUpdateMap(bool force) {
   return true;
 }
 
+// Nodes are scans, and the truth holds the robot's pose at every scan, in time
+// order.
+const slam::TimedPose* ExplorationLoop::TruthAtScan(double time_s) const {
+  const auto it =
+      std::lower_bound(result_.truth.begin(), result_.truth.end(), time_s,
+                       [](const slam::TimedPose& truth, double t) { return truth.time_s < t; });
+  return it != result_.truth.end() && it->time_s == time_s ? &*it : nullptr;
+}
+
 // The map is placed in the world as the ATE places the trajectory: by the
 // rigid fit of the SLAM nodes to the robot's true poses at their scans. The
 // start pose alone (world_from_map_) charged the map's frame for how the
@@ -153,14 +162,11 @@ geometry::Rigid2d ExplorationLoop::CoverageAlignment(
     const std::vector<slam::TimedPose>& nodes) const {
   std::vector<Eigen::Vector2d> estimate;
   std::vector<Eigen::Vector2d> truth;
-  auto it = result_.truth.begin();
   for (const slam::TimedPose& node : nodes) {
-    // Both are in time order, and nodes are scans the truth holds.
-    while (it != result_.truth.end() && it->time_s < node.time_s) ++it;
-    if (it == result_.truth.end()) break;
-    if (it->time_s != node.time_s) continue;
-    estimate.push_back(node.pose.translation());
-    truth.push_back(it->pose.translation());
+    if (const slam::TimedPose* t = TruthAtScan(node.time_s)) {
+      estimate.push_back(node.pose.translation());
+      truth.push_back(t->pose.translation());
+    }
   }
   Eigen::Vector2d mean = Eigen::Vector2d::Zero();
   for (const Eigen::Vector2d& p : estimate) mean += p;
@@ -221,12 +227,8 @@ Eigen::Vector2d ExplorationLoop::MapPointInWorld(const Eigen::Vector2d& point_ma
     if (d2 < best_m2) best_m2 = d2, nearest = &node;
   }
   if (nearest != nullptr) {
-    // Nodes are scans, and the truth holds the robot's pose at every scan.
-    const auto it = std::lower_bound(
-        result_.truth.begin(), result_.truth.end(), nearest->time_s,
-        [](const slam::TimedPose& truth, double time_s) { return truth.time_s < time_s; });
-    if (it != result_.truth.end() && it->time_s == nearest->time_s) {
-      return it->pose * (nearest->pose.inverse() * point_map);
+    if (const slam::TimedPose* t = TruthAtScan(nearest->time_s)) {
+      return t->pose * (nearest->pose.inverse() * point_map);
     }
   }
   return world_from_estimate * point_map;

@@ -153,6 +153,8 @@ class ExplorationLoop {
   geometry::Rigid2d EstimatedPose() const;
   // Where a point of the estimated map lies in the true world (see the .cc).
   Eigen::Vector2d MapPointInWorld(const Eigen::Vector2d& point_map) const;
+  // The robot's true pose at the scan stamped 'time_s' (a SLAM node's), if any.
+  const slam::TimedPose* TruthAtScan(double time_s) const;
   // Where coverage places the fused map in the world, given SLAM's current
   // nodes (see the .cc).
   geometry::Rigid2d CoverageAlignment(const std::vector<slam::TimedPose>& nodes) const;
