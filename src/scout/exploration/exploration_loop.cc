@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <optional>
 #include <utility>
 
 #include "scout/frontier/stopwatch.h"
@@ -200,38 +201,45 @@ void ExplorationLoop::MeasureCoverage(const std::vector<slam::TimedPose>& nodes)
   }
 }
 
-// A point of the map beyond the lidar's range lies in the true world where the
-// map around it puts it: relative to the true pose of the SLAM node nearest to
-// it, as it lies relative to that node's estimate (the scans that mapped it).
-// Relative to the robot's current pose instead, the heading error between the
-// robot's surroundings and the goal's grows with the distance: office seed 1
-// sent the robot to a target 30 m away that this placed against a desk's
-// corner, too close for the disc. (The start alignment world_from_map_ is
-// worse: it adds the drift loop closures later remove.)
+// A point of the map lies in the true world where the scans that mapped it
+// put it: among the submaps whose grid knows the cell under it, the node
+// inserted nearest to it, at that node's true pose, with the point where it
+// lay relative to the node in the submap's frame. Submaps never change
+// inside, so this holds whatever the optimiser did to the graph since.
+// Two simpler rules each misplaced reachable goals (counted unreachable):
+// relative to the robot's current pose, the heading error grows with the
+// distance (office seed 1: a target 30 m away put against a desk's corner);
+// relative to the SLAM node nearest in the global map, that node may belong
+// to submaps a loop closure has not yet joined to the point's (mit-building-31
+// seeds 2, 4 and 5: targets 2-4 m from the robot put a metre beyond the outer
+// wall). Without such a node (no submap knows the point) the robot's pose is
+// the reference.
 Eigen::Vector2d ExplorationLoop::MapPointInWorld(const Eigen::Vector2d& point_map) const {
-  const geometry::Rigid2d estimate = EstimatedPose();
-  const geometry::Rigid2d world_from_estimate = robot_.true_pose() * estimate.inverse();
-  // Within the lidar's range the robot sees the goal's surroundings now and
-  // drives there localised in them: its own pose is the reference. (An old
-  // node is not: on mit-building-31 seeds 2, 4 and 5, frontier 2-4 m from
-  // the robot lay in submaps a loop closure had not yet joined to the old
-  // ones, whose nodes put the targets a metre beyond the outer wall.)
-  if ((point_map - estimate.translation()).norm() <= options_.robot.lidar.range_max_m) {
-    return world_from_estimate * point_map;
+  const std::vector<slam::SubmapState> submaps = builder_->GetSubmaps();
+  std::vector<std::optional<Eigen::Vector2d>> point_in_submap(submaps.size());
+  for (size_t i = 0; i < submaps.size(); ++i) {
+    const Eigen::Vector2d q = submaps[i].global_pose.inverse() * point_map;
+    const grid::ProbabilityGrid& grid = *submaps[i].grid;
+    const grid::CellIndex cell = grid.limits().CellContaining(q);
+    if (grid.limits().Contains(cell) && grid.IsKnown(cell)) point_in_submap[i] = q;
   }
-  const std::vector<slam::TimedPose> nodes = builder_->GetTrajectory();
-  const slam::TimedPose* nearest = nullptr;
-  double best_m2 = std::numeric_limits<double>::infinity();
-  for (const slam::TimedPose& node : nodes) {
-    const double d2 = (node.pose.translation() - point_map).squaredNorm();
-    if (d2 < best_m2) best_m2 = d2, nearest = &node;
+  const std::vector<slam::Constraint> constraints = builder_->GetConstraints();
+  const slam::Constraint* nearest = nullptr;
+  double best_m = std::numeric_limits<double>::infinity();
+  for (const slam::Constraint& c : constraints) {
+    if (c.kind != slam::ConstraintKind::kIntraSubmap) continue;
+    const std::optional<Eigen::Vector2d>& q = point_in_submap.at(c.submap_id);
+    if (!q) continue;
+    const double d = (c.relative_pose.translation() - *q).norm();
+    if (d < best_m) best_m = d, nearest = &c;
   }
   if (nearest != nullptr) {
-    if (const slam::TimedPose* t = TruthAtScan(nearest->time_s)) {
-      return t->pose * (nearest->pose.inverse() * point_map);
+    const std::vector<slam::TimedPose> nodes = builder_->GetTrajectory();
+    if (const slam::TimedPose* t = TruthAtScan(nodes.at(nearest->node_id).time_s)) {
+      return t->pose * (nearest->relative_pose.inverse() * *point_in_submap[nearest->submap_id]);
     }
   }
-  return world_from_estimate * point_map;
+  return robot_.true_pose() * EstimatedPose().inverse() * point_map;
 }
 
 void ExplorationLoop::RecordIssuedGoal(const Eigen::Vector2d& goal_map,

@@ -41,10 +41,9 @@ struct IssuedGoal {
   double sim_time_s = 0.0;
   // The navigation point, and where the robot was sent for it (the stand-off
   // point before it, or the point itself; GoalManagerOptions::max_stand_off_m),
-  // placed in the world relative to the robot's true pose as they were
-  // relative to its estimate when within the lidar's range, else relative to
-  // the true pose of the SLAM node nearest to each as they were relative to
-  // that node's estimate.
+  // placed in the world by the scans that mapped each: relative to the true
+  // pose of the node nearest to it in a submap that knows it, as it lay
+  // relative to that node in the submap (ExplorationLoop::MapPointInWorld).
   Eigen::Vector2d goal_world = Eigen::Vector2d::Zero();
   Eigen::Vector2d target_world = Eigen::Vector2d::Zero();
   Eigen::Vector2d robot_world = Eigen::Vector2d::Zero();  // true position then

@@ -56,6 +56,15 @@ TEST(ExplorationLoopTest, ExploresASmallBuildingCompletelyAndQuickly) {
   ASSERT_TRUE(r.time_to_coverage_s[0].has_value());
   EXPECT_LE(*r.time_to_coverage_s[0], r.sim_time_s);
   EXPECT_EQ(static_cast<int>(r.goals.size()), r.counters.goals_issued);
+  // Where the robot was sent lies on truly free space: each target is placed
+  // in the world by the scans that mapped it, and its disc fit the map.
+  const sim::World world = testing::SmallBuilding();
+  for (const IssuedGoal& g : r.goals) {
+    const grid::CellIndex cell = world.map.limits.CellContaining(g.target_world);
+    ASSERT_TRUE(world.map.limits.Contains(cell));
+    EXPECT_EQ(world.map.cells[world.map.limits.FlatIndex(cell)], grid::CellState::kFree)
+        << "target issued at t=" << g.sim_time_s << " s lies at " << g.target_world.transpose();
+  }
   // The SLAM estimate stays close to the truth: the last node against the
   // true pose at its scan, in the world frame.
   const std::vector<slam::TimedPose> nodes = loop.map_builder().GetTrajectory();
