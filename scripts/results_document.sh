@@ -32,8 +32,9 @@ not_run() {
 # aa01b49: explore's local SLAM (rotation prior 10, few-return scans weighted down) and the
 # no_progress rule (the robot's own map instead of the true coverage); then how runs are
 # scored: where an issued goal lies in the true world (the unreachable count) and the map
-# placed by the rigid fit of the trajectory (coverage).
-EXPLORE_BEHAVIOUR_COMMIT=d9186d8
+# placed by the rigid fit of the trajectory (coverage); 1d008ff: an issued goal placed in
+# the true world through the submap that mapped it (the unreachable count).
+EXPLORE_BEHAVIOUR_COMMIT=1d008ff
 stale_runs() {
   local since name f
   since=$(git log -1 --format=%ct "$EXPLORE_BEHAVIOUR_COMMIT" 2>/dev/null) || return 0
@@ -152,9 +153,9 @@ write_document() {
     echo "trajectory to the true one (as for the ATE); *path to 99 %* is the path length when coverage"
     echo "first reached 99 % (— = never); *unreachable* counts goals whose target (where the robot was"
     echo "sent, up to 0.5 m before the navigation point) the true world makes unreachable for the robot"
-    echo "disc, placed relative to the robot's true pose as it was relative to its estimate (within the"
-    echo "lidar's 8 m; farther, through the SLAM node nearest to it; each is listed with its position"
-    echo "in the run's \`summary.json\`); *ATE* is the"
+    echo "disc, placed where the scans that mapped it put it (relative to the true pose of the node"
+    echo "nearest to it in a submap that knows it; each is listed with its position in the run's"
+    echo "\`summary.json\`); *ATE* is the"
     echo "estimated trajectory against the simulator's. A run ends \`complete\` when no navigation"
     echo "point is left and at most 0.5 m of frontier a plan reaches remains away from goals the"
     echo "robot reached (frontier that stayed where it went is counted as \`visited_frontier_left\`),"
