@@ -122,6 +122,9 @@ TEST_F(ExploreCli, ExploresASmallMapAndWritesEveryOutput) {
   EXPECT_EQ(s["collision_places"].size(), 0u);  // one entry per collision
   EXPECT_EQ(s["goals"]["unreachable"], 0);
   EXPECT_EQ(s["unreachable_goals"].size(), 0u);  // one entry per unreachable goal
+  // One place per reachable frontier point left.
+  EXPECT_EQ(s["reachable_frontier_left_places"].size(),
+            s["goals"]["reachable_frontier_left"].get<size_t>());
   EXPECT_GT(s["goals"]["issued"].get<int>(), 0);
   EXPECT_LT(s["ate_rmse_m"].get<double>(), 0.1);
   EXPECT_GT(s["sim_time_s"].get<double>(), s["wall_time_s"].get<double>());

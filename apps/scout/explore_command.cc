@@ -131,6 +131,11 @@ nlohmann::json Summary(const ExploreArgs& args, const exploration::ExplorationLo
                            {"robot", {g.robot_world.x(), g.robot_world.y()}}});
   }
   s["unreachable_goals"] = unreachable;
+  // Frontier the policy gave up on (ended no_progress with it left): where.
+  nlohmann::json gave_up = nlohmann::json::array();
+  for (const Eigen::Vector2d& p : r.reachable_frontier_left_world)
+    gave_up.push_back({p.x(), p.y()});
+  s["reachable_frontier_left_places"] = gave_up;
   s["returned_home"] = r.returned_home;
   s["collisions"] = r.collisions;
   nlohmann::json collisions = nlohmann::json::array();

@@ -335,6 +335,9 @@ ExplorationResult ExplorationLoop::Run(const ProgressCallback& progress,
       result_.returned_home = status.returned_home;
       result_.frontier_left = status.frontier_left;
       result_.reachable_frontier_left = status.reachable_frontier_left;
+      for (const Eigen::Vector2d& p : status.reachable_frontier_left_points) {
+        result_.reachable_frontier_left_world.push_back(MapPointInWorld(p));
+      }
       result_.visited_frontier_left = status.visited_frontier_left;
       break;
     }

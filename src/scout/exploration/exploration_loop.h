@@ -99,6 +99,8 @@ struct ExplorationResult {
   // but near a goal the robot reached (ExploreStatus).
   int reachable_frontier_left = 0;
   int visited_frontier_left = 0;
+  // Where the reachable ones lie in the true world (placed like goals).
+  std::vector<Eigen::Vector2d> reachable_frontier_left_world;
   std::vector<CoverageSample> coverage_samples;
   std::vector<IssuedGoal> goals;
   // Where each collision began (true position, world frame) and when.

@@ -293,13 +293,19 @@ void GoalManager::FinishOrGoHome(const ExploreInput& in, ExploreStatus& status) 
     }
   }
   reachable_frontier_left_ = visited_frontier_left_ = 0;
+  reachable_frontier_left_points_.clear();
   if (frontier_left_ > 0) {
     const StartRegion start(*map_, in.robot_pose.translation());
     const PathDistanceField field(*map_, start);
     const std::vector<Eigen::Vector2d> visited = visited_.Blacklisted(in.submaps);
     for (const Eigen::Vector2d& p : FrontierInBoundary(*in.frontier)) {
       if (!field.NearestReached(p, map_->options().goal_snap_radius_m)) continue;
-      ++(visited_.IsNear(p, visited) ? visited_frontier_left_ : reachable_frontier_left_);
+      if (visited_.IsNear(p, visited)) {
+        ++visited_frontier_left_;
+      } else {
+        ++reachable_frontier_left_;
+        reachable_frontier_left_points_.push_back(p);
+      }
     }
   }
   EndGoal(ExploreState::kFinished);
@@ -479,6 +485,7 @@ ExploreStatus GoalManager::Update(const ExploreInput& in) {
   status.candidates = candidates_;
   status.frontier_left = frontier_left_;
   status.reachable_frontier_left = reachable_frontier_left_;
+  status.reachable_frontier_left_points = reachable_frontier_left_points_;
   status.visited_frontier_left = visited_frontier_left_;
   status.returned_home = returned_home_;
   return status;

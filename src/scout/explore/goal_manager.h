@@ -158,6 +158,8 @@ struct ExploreStatus {
   // (within the failed-goal blacklist radius): more than zero means it gave
   // up on them.
   int reachable_frontier_left = 0;
+  // Where those are (global frame), so a user can find what it gave up on.
+  std::vector<Eigen::Vector2d> reachable_frontier_left_points;
   // The reachable ones near a goal the robot reached: it went there, looked,
   // and they stayed (the unknown beyond cannot be seen from where the robot
   // fits, e.g. a gap behind furniture).
@@ -273,6 +275,7 @@ class GoalManager {
   std::optional<double> empty_since_s_;
   int frontier_left_ = 0;
   int reachable_frontier_left_ = 0;
+  std::vector<Eigen::Vector2d> reachable_frontier_left_points_;
   int visited_frontier_left_ = 0;
   std::vector<Eigen::Vector2d> candidates_;
   bool returned_home_ = false;

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "scout/explore/test_maps.h"
 
 namespace scout::explore {
@@ -228,6 +230,31 @@ TEST(GoalManagerTest, FrontierThatStaysWhereTheRobotWentCountsAsVisitedNotGivenU
   // any plan.
   EXPECT_GT(s.visited_frontier_left, s.frontier_left * 3 / 4);
   EXPECT_LE(s.visited_frontier_left, s.frontier_left);
+}
+
+TEST(GoalManagerTest, FrontierGivenUpOnIsCountedAndListed) {
+  // The robot never moves: every goal fails and is blacklisted, until none is
+  // left. The frontier it could plan to is reported as given up on, and
+  // where each point lies, so a user can find it.
+  Room room;
+  GoalManagerOptions o = NoStuckRecovery();
+  GoalManager gm = MakeManager(o);
+  gm.Start();
+  const Eigen::Vector2d robot = room.b.At(10, 20);
+  ExploreStatus s = gm.Update(room.Input(0, robot, true));
+  for (double t = 0.5; s.state != ExploreState::kFinished && t < 3000.0; t += 0.5) {
+    s = gm.Update(room.Input(t, robot, false));
+  }
+  ASSERT_EQ(s.state, ExploreState::kFinished);
+  EXPECT_GT(gm.counters().goals_failed, 0);
+  EXPECT_EQ(gm.counters().goals_reached, 0);
+  EXPECT_GT(s.reachable_frontier_left, 0);
+  EXPECT_EQ(s.visited_frontier_left, 0);
+  ASSERT_EQ(static_cast<int>(s.reachable_frontier_left_points.size()), s.reachable_frontier_left);
+  for (const Eigen::Vector2d& p : s.reachable_frontier_left_points) {
+    EXPECT_NE(std::find(room.frontier.begin(), room.frontier.end(), p), room.frontier.end())
+        << p.transpose() << " is not a frontier point";
+  }
 }
 
 TEST(GoalManagerTest, FinishesWhenNothingIsLeftAndReturnsHome) {
