@@ -213,41 +213,47 @@ void ExplorationLoop::MeasureCoverage(const std::vector<slam::TimedPose>& nodes)
 // to submaps a loop closure has not yet joined to the point's (mit-building-31
 // seeds 2, 4 and 5: targets 2-4 m from the robot put a metre beyond the outer
 // wall). Without such a node (no submap knows the point) the robot's pose is
-// the reference.
-Eigen::Vector2d ExplorationLoop::MapPointInWorld(const Eigen::Vector2d& point_map) const {
+// the reference. SLAM's state is fetched once for all the points.
+std::vector<Eigen::Vector2d> ExplorationLoop::MapPointsInWorld(
+    const std::vector<Eigen::Vector2d>& points_map) const {
   const std::vector<slam::SubmapState> submaps = builder_->GetSubmaps();
-  std::vector<std::optional<Eigen::Vector2d>> point_in_submap(submaps.size());
-  for (size_t i = 0; i < submaps.size(); ++i) {
-    const Eigen::Vector2d q = submaps[i].global_pose.inverse() * point_map;
-    const grid::ProbabilityGrid& grid = *submaps[i].grid;
-    const grid::CellIndex cell = grid.limits().CellContaining(q);
-    if (grid.limits().Contains(cell) && grid.IsKnown(cell)) point_in_submap[i] = q;
-  }
   const std::vector<slam::Constraint> constraints = builder_->GetConstraints();
-  const slam::Constraint* nearest = nullptr;
-  double best_m = std::numeric_limits<double>::infinity();
-  for (const slam::Constraint& c : constraints) {
-    if (c.kind != slam::ConstraintKind::kIntraSubmap) continue;
-    const std::optional<Eigen::Vector2d>& q = point_in_submap.at(c.submap_id);
-    if (!q) continue;
-    const double d = (c.relative_pose.translation() - *q).norm();
-    if (d < best_m) best_m = d, nearest = &c;
-  }
-  if (nearest != nullptr) {
-    const std::vector<slam::TimedPose> nodes = builder_->GetTrajectory();
-    if (const slam::TimedPose* t = TruthAtScan(nodes.at(nearest->node_id).time_s)) {
-      return t->pose * (nearest->relative_pose.inverse() * *point_in_submap[nearest->submap_id]);
+  const std::vector<slam::TimedPose> nodes = builder_->GetTrajectory();
+  const geometry::Rigid2d world_from_estimate = robot_.true_pose() * EstimatedPose().inverse();
+  std::vector<Eigen::Vector2d> points_world;
+  for (const Eigen::Vector2d& point_map : points_map) {
+    std::vector<std::optional<Eigen::Vector2d>> point_in_submap(submaps.size());
+    for (size_t i = 0; i < submaps.size(); ++i) {
+      const Eigen::Vector2d q = submaps[i].global_pose.inverse() * point_map;
+      const grid::ProbabilityGrid& grid = *submaps[i].grid;
+      const grid::CellIndex cell = grid.limits().CellContaining(q);
+      if (grid.limits().Contains(cell) && grid.IsKnown(cell)) point_in_submap[i] = q;
     }
+    const slam::Constraint* nearest = nullptr;
+    double best_m = std::numeric_limits<double>::infinity();
+    for (const slam::Constraint& c : constraints) {
+      if (c.kind != slam::ConstraintKind::kIntraSubmap) continue;
+      const std::optional<Eigen::Vector2d>& q = point_in_submap.at(c.submap_id);
+      if (!q) continue;
+      const double d = (c.relative_pose.translation() - *q).norm();
+      if (d < best_m) best_m = d, nearest = &c;
+    }
+    const slam::TimedPose* truth =
+        nearest != nullptr ? TruthAtScan(nodes.at(nearest->node_id).time_s) : nullptr;
+    points_world.push_back(truth != nullptr ? truth->pose * (nearest->relative_pose.inverse() *
+                                                             *point_in_submap[nearest->submap_id])
+                                            : world_from_estimate * point_map);
   }
-  return robot_.true_pose() * EstimatedPose().inverse() * point_map;
+  return points_world;
 }
 
 void ExplorationLoop::RecordIssuedGoal(const Eigen::Vector2d& goal_map,
                                        const Eigen::Vector2d& target_map) {
   IssuedGoal g;
   g.sim_time_s = robot_.sim_time_s();
-  g.goal_world = MapPointInWorld(goal_map);
-  g.target_world = MapPointInWorld(target_map);
+  const std::vector<Eigen::Vector2d> world = MapPointsInWorld({goal_map, target_map});
+  g.goal_world = world[0];
+  g.target_world = world[1];
   g.robot_world = robot_.true_pose().translation();
   // Reached means within the follower's tolerance, so that is the slack.
   const double tolerance_m = options_.explore.follower.goal_tolerance_m;
@@ -335,9 +341,8 @@ ExplorationResult ExplorationLoop::Run(const ProgressCallback& progress,
       result_.returned_home = status.returned_home;
       result_.frontier_left = status.frontier_left;
       result_.reachable_frontier_left = status.reachable_frontier_left;
-      for (const Eigen::Vector2d& p : status.reachable_frontier_left_points) {
-        result_.reachable_frontier_left_world.push_back(MapPointInWorld(p));
-      }
+      result_.reachable_frontier_left_world =
+          MapPointsInWorld(status.reachable_frontier_left_points);
       result_.visited_frontier_left = status.visited_frontier_left;
       break;
     }

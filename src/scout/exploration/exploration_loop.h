@@ -43,7 +43,7 @@ struct IssuedGoal {
   // point before it, or the point itself; GoalManagerOptions::max_stand_off_m),
   // placed in the world by the scans that mapped each: relative to the true
   // pose of the node nearest to it in a submap that knows it, as it lay
-  // relative to that node in the submap (ExplorationLoop::MapPointInWorld).
+  // relative to that node in the submap (ExplorationLoop::MapPointsInWorld).
   Eigen::Vector2d goal_world = Eigen::Vector2d::Zero();
   Eigen::Vector2d target_world = Eigen::Vector2d::Zero();
   Eigen::Vector2d robot_world = Eigen::Vector2d::Zero();  // true position then
@@ -152,8 +152,9 @@ class ExplorationLoop {
   void FeedSensorsUntimed();
   // Returns the robot's SLAM estimate (map frame) at the latest odometry.
   geometry::Rigid2d EstimatedPose() const;
-  // Where a point of the estimated map lies in the true world (see the .cc).
-  Eigen::Vector2d MapPointInWorld(const Eigen::Vector2d& point_map) const;
+  // Where points of the estimated map lie in the true world (see the .cc).
+  std::vector<Eigen::Vector2d> MapPointsInWorld(
+      const std::vector<Eigen::Vector2d>& points_map) const;
   // The robot's true pose at the scan stamped 'time_s' (a SLAM node's), if any.
   const slam::TimedPose* TruthAtScan(double time_s) const;
   // Where coverage places the fused map in the world, given SLAM's current

@@ -292,7 +292,7 @@ void GoalManager::FinishOrGoHome(const ExploreInput& in, ExploreStatus& status) 
       return;
     }
   }
-  reachable_frontier_left_ = visited_frontier_left_ = 0;
+  visited_frontier_left_ = 0;
   reachable_frontier_left_points_.clear();
   if (frontier_left_ > 0) {
     const StartRegion start(*map_, in.robot_pose.translation());
@@ -303,7 +303,6 @@ void GoalManager::FinishOrGoHome(const ExploreInput& in, ExploreStatus& status) 
       if (visited_.IsNear(p, visited)) {
         ++visited_frontier_left_;
       } else {
-        ++reachable_frontier_left_;
         reachable_frontier_left_points_.push_back(p);
       }
     }
@@ -484,7 +483,7 @@ ExploreStatus GoalManager::Update(const ExploreInput& in) {
   status.blacklisted = failed_.Blacklisted(in.submaps);
   status.candidates = candidates_;
   status.frontier_left = frontier_left_;
-  status.reachable_frontier_left = reachable_frontier_left_;
+  status.reachable_frontier_left = static_cast<int>(reachable_frontier_left_points_.size());
   status.reachable_frontier_left_points = reachable_frontier_left_points_;
   status.visited_frontier_left = visited_frontier_left_;
   status.returned_home = returned_home_;

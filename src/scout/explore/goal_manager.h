@@ -274,7 +274,6 @@ class GoalManager {
   bool guard_stopped_ = false;
   std::optional<double> empty_since_s_;
   int frontier_left_ = 0;
-  int reachable_frontier_left_ = 0;
   std::vector<Eigen::Vector2d> reachable_frontier_left_points_;
   int visited_frontier_left_ = 0;
   std::vector<Eigen::Vector2d> candidates_;
