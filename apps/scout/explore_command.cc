@@ -115,6 +115,7 @@ nlohmann::json Summary(const ExploreArgs& args, const exploration::ExplorationLo
                 {"retried", r.counters.goals_retried},
                 {"escapes", r.counters.escapes},
                 {"recoveries", r.counters.recoveries},
+                {"stuck_reselections", r.counters.stuck_reselections},
                 {"guard_stops", r.counters.guard_stops},
                 {"guard_steers", r.counters.guard_steers},
                 {"frontier_left", r.frontier_left},

@@ -383,6 +383,19 @@ void GoalManager::FailGoal(const ExploreInput& in) {
   EndGoal(ExploreState::kFailed);
 }
 
+void GoalManager::EndStuckGoal(const ExploreInput& in) {
+  if (state_ == ExploreState::kReturning) return FailGoal(in);
+  const Eigen::Vector2d goal = Resolve(*goal_, in.submaps);
+  const double radius2 =
+      options_.failed_goals.blacklist_radius_m * options_.failed_goals.blacklist_radius_m;
+  for (const AnchoredPoint& p : stuck_goals_) {
+    if ((Resolve(p, in.submaps) - goal).squaredNorm() <= radius2) return FailGoal(in);
+  }
+  stuck_goals_.push_back(*goal_);
+  ++counters_.stuck_reselections;
+  EndGoal(ExploreState::kPlanning);
+}
+
 void GoalManager::Drive(const ExploreInput& in, ExploreStatus& status) {
   const Eigen::Vector2d here = in.robot_pose.translation();
   if (backing_up_since_) {
@@ -397,7 +410,7 @@ void GoalManager::Drive(const ExploreInput& in, ExploreStatus& status) {
         stuck_places_.RecordFailure(from, in.submaps, *map_);
         map_dirty_ = true;
       }
-      FailGoal(in);
+      EndStuckGoal(in);
       return;
     }
     status.command.linear_mps = -options_.back_up_speed_mps;

@@ -52,10 +52,15 @@ struct GoalManagerOptions {
   // Recovery: when the robot is commanded forward but has not moved
   // stuck_min_motion_m for stuck_timeout_s (pressed against an obstacle the
   // map places elsewhere; a blocked arc stops turning too), it backs up
-  // back_up_distance_m at back_up_speed_mps (at most back_up_timeout_s) and
-  // the goal counts as failed. In willow-garage the robot otherwise stayed
-  // pressed against a door post for the last 250 s of its run. A
-  // stuck_timeout_s of 0 turns the recovery off.
+  // back_up_distance_m at back_up_speed_mps (at most back_up_timeout_s). In
+  // willow-garage the robot otherwise stayed pressed against a door post for
+  // the last 250 s of its run. The first time for a goal, the goal is
+  // selected afresh (the passage there is closed, see below): where the
+  // robot got stuck need not say anything about the goal. Office seed 3 got
+  // stuck next to the goal it had just reached, 16 m from the next one, and
+  // failing that one left the frontier behind a desk unexplored. The second
+  // time (a goal within failed_goals.blacklist_radius_m of one it got stuck
+  // on before) the goal fails. A stuck_timeout_s of 0 turns the recovery off.
   double stuck_timeout_s = 3.0;
   double stuck_min_motion_m = 0.05;
   double back_up_distance_m = 0.3;
@@ -133,10 +138,11 @@ struct ExploreCounters {
   int goals_dropped = 0;      // the map put it inside the inflated band
   int goals_retried = 0;      // lifted from the blacklist after a map change
   int selections = 0;
-  int escapes = 0;       // searches that started by leaving the band or a pocket
-  int recoveries = 0;    // back-ups after the robot got stuck (closing its passage)
-  int guard_stops = 0;   // the collision guard stopped a forward command
-  int guard_steers = 0;  // control cycles it steered another arc instead
+  int escapes = 0;             // searches that started by leaving the band or a pocket
+  int recoveries = 0;          // back-ups after the robot got stuck (closing its passage)
+  int stuck_reselections = 0;  // ... after which the goal was selected afresh, not failed
+  int guard_stops = 0;         // the collision guard stopped a forward command
+  int guard_steers = 0;        // control cycles it steered another arc instead
 };
 
 struct ExploreStatus {
@@ -237,6 +243,9 @@ class GoalManager {
   // DRIVING/RETURNING: follow, watch progress.
   // Ends the current goal as failed (or the way home as finished).
   void FailGoal(const ExploreInput& in);
+  // After backing up: fails the goal if the robot got stuck on it before,
+  // otherwise ends it for a fresh selection.
+  void EndStuckGoal(const ExploreInput& in);
   void Drive(const ExploreInput& input, ExploreStatus& status);
   // Returns the distance from 'goal' to the nearest frontier point.
   static double DistanceToFrontier(const Eigen::Vector2d& goal,
@@ -254,6 +263,8 @@ class GoalManager {
   // Where the robot got stuck: narrow passages closed there until the map
   // around them changes (close_stuck_passage_radius_m).
   FailedGoalMemory stuck_places_;
+  // Goals the robot got stuck on once: the next time it fails them.
+  std::vector<AnchoredPoint> stuck_goals_;
 
   ExploreState state_ = ExploreState::kIdle;
   bool started_once_ = false;

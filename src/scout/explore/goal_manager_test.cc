@@ -115,7 +115,7 @@ TEST(GoalManagerTest, ProgressTimeoutMarksTheGoalFailedAndPicksAnother) {
   EXPECT_EQ(gm.counters().goals_issued, 2);
 }
 
-TEST(GoalManagerTest, StuckRobotBacksUpThenTheGoalFails) {
+TEST(GoalManagerTest, StuckRobotBacksUpReselectsAndFailsTheGoalTheSecondTime) {
   Room room;
   GoalManagerOptions o;  // recovery on, defaults: 3 s, 0.3 m back at 0.15 m/s
   GoalManager gm = MakeManager(o);
@@ -125,23 +125,41 @@ TEST(GoalManagerTest, StuckRobotBacksUpThenTheGoalFails) {
   ASSERT_EQ(first.state, ExploreState::kDriving);
   ASSERT_GT(first.command.linear_mps, 0.0);
   // Pressed against something: commanded forward, not moving.
-  ExploreStatus s;
-  for (double t = 0.5; t < o.stuck_timeout_s; t += 0.5) {
-    s = gm.Update(room.Input(t, robot, false));
-    ASSERT_GT(s.command.linear_mps, 0.0) << t;
-  }
-  s = gm.Update(room.Input(o.stuck_timeout_s, robot, false));
-  EXPECT_LT(s.command.linear_mps, 0.0);
+  const auto get_stuck = [&](double t0) {
+    ExploreStatus s;
+    for (double t = t0 + 0.5; t < t0 + o.stuck_timeout_s; t += 0.5) {
+      s = gm.Update(room.Input(t, robot, false));
+      EXPECT_GT(s.command.linear_mps, 0.0) << t;
+    }
+    s = gm.Update(room.Input(t0 + o.stuck_timeout_s, robot, false));
+    EXPECT_LT(s.command.linear_mps, 0.0);
+    // Backing up until 0.3 m away.
+    robot.x() -= 0.2;
+    s = gm.Update(room.Input(t0 + o.stuck_timeout_s + 1.5, robot, false));
+    EXPECT_EQ(s.state, ExploreState::kDriving);
+    EXPECT_LT(s.command.linear_mps, 0.0);
+    robot.x() -= 0.15;
+    return gm.Update(room.Input(t0 + o.stuck_timeout_s + 2.5, robot, false));
+  };
+  // The first time, the goal is selected afresh: the same one, nothing
+  // else in this room has changed.
+  ExploreStatus s = get_stuck(0.0);
   EXPECT_EQ(gm.counters().recoveries, 1);
-  // Backing up until 0.3 m away; then the goal has failed.
-  robot.x() -= 0.2;
-  s = gm.Update(room.Input(o.stuck_timeout_s + 1.5, robot, false));
-  EXPECT_EQ(s.state, ExploreState::kDriving);
-  EXPECT_LT(s.command.linear_mps, 0.0);
-  robot.x() -= 0.15;
-  s = gm.Update(room.Input(o.stuck_timeout_s + 2.5, robot, false));
+  EXPECT_EQ(s.state, ExploreState::kPlanning);
+  EXPECT_EQ(gm.counters().goals_failed, 0);
+  EXPECT_EQ(gm.counters().stuck_reselections, 1);
+  EXPECT_TRUE(s.blacklisted.empty());
+  const double t1 = o.stuck_timeout_s + 3.0;
+  s = gm.Update(room.Input(t1, robot, false));
+  ASSERT_EQ(s.state, ExploreState::kDriving);
+  ASSERT_TRUE(s.goal.has_value());
+  EXPECT_LT((*s.goal - *first.goal).norm(), 1e-9);
+  // The second time, it fails.
+  s = get_stuck(t1);
+  EXPECT_EQ(gm.counters().recoveries, 2);
   EXPECT_EQ(s.state, ExploreState::kFailed);
   EXPECT_EQ(gm.counters().goals_failed, 1);
+  EXPECT_EQ(gm.counters().stuck_reselections, 1);
   ASSERT_EQ(s.blacklisted.size(), 1u);
   EXPECT_EQ(s.blacklisted[0], *first.goal);
 }
@@ -403,7 +421,8 @@ TEST(GoalManagerTest, ANarrowPassageTheRobotGotStuckInIsClosed) {
   ASSERT_EQ(gm.counters().recoveries, 1);
   robot.x() -= 0.35;  // backed up
   s = gm.Update(input(o.stuck_timeout_s + 2.5, robot, false));
-  EXPECT_EQ(s.state, ExploreState::kFailed);
+  EXPECT_EQ(s.state, ExploreState::kPlanning);  // selected afresh, not failed
+  EXPECT_EQ(gm.counters().stuck_reselections, 1);
   // The door was the only way: no goal beyond it is issued again, and when
   // the robot gives up, the frontier there counts as out of reach.
   double t = o.stuck_timeout_s + 3.0;
@@ -473,8 +492,8 @@ TEST(GoalManagerTest, ClosingWhereTheRobotGotStuckNeverSealsItWhereItStands) {
   ASSERT_EQ(gm.counters().recoveries, 1);
   robot.x() -= 0.25;
   s = gm.Update(input(o.stuck_timeout_s + 2.0, false));
-  s = gm.Update(input(o.stuck_timeout_s + 4.5, false));  // back-up timed out: failed
-  ASSERT_EQ(gm.counters().goals_failed, 1);
+  s = gm.Update(input(o.stuck_timeout_s + 4.5, false));  // back-up timed out
+  ASSERT_EQ(gm.counters().stuck_reselections, 1);
   // The corridor's end stays closed, but the robot leaves the way it came, to
   // the unknown corner of the room, instead of giving up.
   s = gm.Update(input(o.stuck_timeout_s + 5.0, false));
