@@ -135,12 +135,32 @@ void GroundTruth::LabelDiscComponents(const explore::PlanningMap& bare) {
 
 double GroundTruth::MappedFreeM2(const grid::OccupancyMap& map,
                                  const geometry::Rigid2d& world_from_map) const {
-  if (map.limits.num_cells() == 0) return 0.0;
+  const grid::MapLimits& m = map.limits;
+  if (m.num_cells() == 0) return 0.0;
+  // Positions in map cell units (floor gives the map cell). Runs every few
+  // simulated seconds over every reachable cell (millions in the museum, where
+  // it took a third of the wall time): along a run of adjacent cells of one
+  // row the position advances by a constant step, so only the first cell of
+  // each run is transformed.
   const geometry::Rigid2d map_from_world = world_from_map.inverse();
+  const double inv_resolution = 1.0 / m.resolution();
+  const Eigen::Vector2d step =
+      map_from_world.Rotate(Eigen::Vector2d(limits_.resolution(), 0.0)) * inv_resolution;
   int64_t mapped = 0;
+  Eigen::Vector2d u = Eigen::Vector2d::Zero();
+  grid::CellIndex previous{-2, -2};
   for (const grid::CellIndex& cell : reachable_) {
-    const Eigen::Vector2d p = map_from_world * limits_.CellCenter(cell);
-    mapped += map.at(map.limits.CellContaining(p)) == grid::CellState::kFree;
+    if (cell.y == previous.y && cell.x == previous.x + 1) {
+      u += step;
+    } else {
+      u = (map_from_world * limits_.CellCenter(cell) - m.origin()) * inv_resolution;
+    }
+    previous = cell;
+    const double fx = std::floor(u.x());
+    const double fy = std::floor(u.y());
+    if (fx < 0.0 || fy < 0.0 || fx >= m.width() || fy >= m.height()) continue;
+    mapped += map.cells[static_cast<int64_t>(fy) * m.width() + static_cast<int64_t>(fx)] ==
+              grid::CellState::kFree;
   }
   return mapped * cell_area_m2_;
 }

@@ -2,6 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <random>
+
 #include "scout/common/error.h"
 #include "scout/exploration/test_worlds.h"
 
@@ -50,6 +54,40 @@ TEST(GroundTruthTest, MappedAreaCountsOnlyFreeCellsWhereTheWorldIsFree) {
   const double share = truth.MappedFreeM2(left, geometry::Rigid2d()) / truth.reachable_free_m2();
   EXPECT_GT(share, 0.4);
   EXPECT_LT(share, 0.6);
+}
+
+// The row-wise stepping of MappedFreeM2 counts exactly what transforming every
+// reachable cell centre on its own counts, for maps of another resolution,
+// origin and rotation.
+TEST(GroundTruthTest, MappedAreaEqualsACellByCellCountUnderAnyPlacement) {
+  const sim::World w = testing::SmallBuilding();
+  const GroundTruth truth = Truth(w);
+  const std::vector<uint8_t> reachable = truth.ReachableMask();
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  for (int trial = 0; trial < 20; ++trial) {
+    const double resolution = trial % 2 == 0 ? 0.05 : 0.04;
+    grid::OccupancyMap map;
+    // Centred on the world (its centre at the map frame's origin), any angle.
+    map.limits = grid::MapLimits(resolution, {-6.0 - uniform(rng), -5.0 - uniform(rng)}, 360, 300);
+    map.cells.resize(map.limits.num_cells());
+    for (CellState& c : map.cells) c = uniform(rng) < 0.7 ? CellState::kFree : CellState::kOccupied;
+    const Eigen::Vector2d centre = truth.limits().Bounds().Center();
+    const geometry::Rigid2d world_from_map(centre.x() + uniform(rng) - 0.5,
+                                           centre.y() + uniform(rng) - 0.5,
+                                           2.0 * M_PI * uniform(rng));
+    const geometry::Rigid2d map_from_world = world_from_map.inverse();
+    int64_t expected = 0;
+    const grid::MapLimits& world = truth.limits();
+    for (int64_t i = 0; i < world.num_cells(); ++i) {
+      if (!reachable[i]) continue;
+      const Eigen::Vector2d p = map_from_world * world.CellCenter(world.CellOfFlatIndex(i));
+      expected += map.at(map.limits.CellContaining(p)) == CellState::kFree;
+    }
+    const int64_t num_reachable = std::count(reachable.begin(), reachable.end(), 1);
+    ASSERT_GT(expected, num_reachable / 2);  // the map covers the building
+    EXPECT_NEAR(truth.MappedFreeM2(map, world_from_map), expected * 0.05 * 0.05, 1e-9) << trial;
+  }
 }
 
 TEST(GroundTruthTest, BeyondTheMapIsAWallLikeInTheSimulator) {
