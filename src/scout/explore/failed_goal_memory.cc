@@ -56,6 +56,20 @@ int FailedGoalMemory::RetryChangedGoals(const PlanningMap& map,
   return lifted;
 }
 
+int FailedGoalMemory::RetryNear(const std::vector<Eigen::Vector2d>& points,
+                                const std::vector<SubmapPose>& submaps) {
+  int lifted = 0;
+  for (FailedGoal& g : goals_) {
+    if (!g.blacklisted) continue;
+    if (options_.max_failures > 0 && g.failures >= options_.max_failures) continue;
+    if (IsNear(Resolve(g.where, submaps), points)) {
+      g.blacklisted = false;
+      ++lifted;
+    }
+  }
+  return lifted;
+}
+
 std::vector<Eigen::Vector2d> FailedGoalMemory::Blacklisted(
     const std::vector<SubmapPose>& submaps) const {
   std::vector<Eigen::Vector2d> out;

@@ -48,6 +48,10 @@ class FailedGoalMemory {
   // Lifts the blacklisting of goals whose surroundings changed (see options);
   // returns how many were lifted.
   int RetryChangedGoals(const PlanningMap& map, const std::vector<SubmapPose>& submaps);
+  // Lifts the blacklisting of goals (below max_failures) within the blacklist
+  // radius of one of 'points' (global), whatever the map did; returns how
+  // many were lifted.
+  int RetryNear(const std::vector<Eigen::Vector2d>& points, const std::vector<SubmapPose>& submaps);
   // Returns the global positions of the blacklisted goals.
   std::vector<Eigen::Vector2d> Blacklisted(const std::vector<SubmapPose>& submaps) const;
   // True when 'global' lies within the blacklist radius of one of 'blacklisted'.

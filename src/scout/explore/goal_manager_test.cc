@@ -275,6 +275,32 @@ TEST(GoalManagerTest, FrontierGivenUpOnIsCountedAndListed) {
   }
 }
 
+TEST(GoalManagerTest, BeforeGivingUpAFailedGoalNextToReachableFrontierIsTriedAgain) {
+  // One small unknown patch in a known room; the robot never moves, so its
+  // goal there fails, and the map never changes, so the retry rule (known area
+  // around the goal changed) never lifts it. Before finishing, the goal is
+  // tried again while it has failed fewer than max_failures times.
+  MapBuilder b{60, 40};
+  b.Wall(0, 0, 59, 39).Free(1, 1, 58, 38).Fill(48, 19, 49, 20, grid::CellState::kUnknown);
+  const std::vector<Eigen::Vector2d> frontier = b.FrontierPoints();
+  GoalManagerOptions o = NoStuckRecovery();
+  ASSERT_EQ(o.failed_goals.max_failures, 3);
+  GoalManager gm = MakeManager(o);
+  gm.Start();
+  const Eigen::Vector2d robot = b.At(10, 20);
+  ExploreStatus s = gm.Update(InputAt(0, robot, b.map(), frontier, true));
+  ASSERT_EQ(s.state, ExploreState::kDriving);
+  for (double t = 0.5; s.state != ExploreState::kFinished && t < 3000.0; t += 0.5) {
+    s = gm.Update(InputAt(t, robot, b.map(), frontier, false));
+  }
+  ASSERT_EQ(s.state, ExploreState::kFinished);
+  EXPECT_EQ(gm.counters().goals_issued, 3);
+  EXPECT_EQ(gm.counters().goals_failed, 3);
+  EXPECT_EQ(gm.counters().goals_retried, 2);
+  // Given up on after the third failure, and reported so.
+  EXPECT_EQ(s.reachable_frontier_left, static_cast<int>(frontier.size()));
+}
+
 TEST(GoalManagerTest, FinishesWhenNothingIsLeftAndReturnsHome) {
   Room room;
   room.frontier.clear();
