@@ -35,12 +35,26 @@ not_run() {
 # placed by the rigid fit of the trajectory (coverage); 1d008ff: an issued goal placed in
 # the true world through the submap that mapped it (the unreachable count).
 EXPLORE_BEHAVIOUR_COMMIT=1d008ff
+# d725b7b (a goal fails on its second stuck recovery, not its first) changes only runs
+# with a stuck recovery, 137c2f9 (failed goals next to reachable frontier tried once more
+# before finishing) only runs that ended with reachable frontier left: an older run
+# without them would repeat exactly, one with them is stale.
+EXPLORE_STUCK_COMMIT=d725b7b
+EXPLORE_RETRY_COMMIT=137c2f9
 stale_runs() {
-  local since name f
+  local since since_stuck since_retry name f t
   since=$(git log -1 --format=%ct "$EXPLORE_BEHAVIOUR_COMMIT" 2>/dev/null) || return 0
+  since_stuck=$(git log -1 --format=%ct "$EXPLORE_STUCK_COMMIT" 2>/dev/null) || since_stuck=0
+  since_retry=$(git log -1 --format=%ct "$EXPLORE_RETRY_COMMIT" 2>/dev/null) || since_retry=0
   for name in "$@"; do
     f=$OUT/$name/summary.json
-    if [[ -f $f ]] && (($(stat -c %Y "$f") < since)); then printf '`%s` ' "$name"; fi
+    [[ -f $f ]] || continue
+    t=$(stat -c %Y "$f")
+    if ((t < since)) ||
+      { ((t < since_stuck)) && grep -Eq '"recoveries": *[1-9]' "$f"; } ||
+      { ((t < since_retry)) && grep -Eq '"reachable_frontier_left": *[1-9]' "$f"; }; then
+      printf '`%s` ' "$name"
+    fi
   done
 }
 
@@ -167,8 +181,10 @@ write_document() {
     if [[ -n $stale ]]; then
       echo "Made with a build older than commit $EXPLORE_BEHAVIOUR_COMMIT, which changed what every"
       echo "policy's robot does (local SLAM's heading prior, the no_progress rule) and how runs are"
-      echo "scored (coverage placed by the trajectory fit, where goals lie), so not like-for-like"
-      echo "with the other runs: $stale"
+      echo "scored (coverage placed by the trajectory fit, where goals lie); or older than"
+      echo "$EXPLORE_STUCK_COMMIT with a stuck recovery, or than $EXPLORE_RETRY_COMMIT with reachable frontier"
+      echo "left at the end (the runs those commits change), so not like-for-like with the other"
+      echo "runs: $stale"
       echo
     fi
     tables explore "${EXPLORE[@]}"
