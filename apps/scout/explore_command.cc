@@ -116,6 +116,7 @@ nlohmann::json Summary(const ExploreArgs& args, const exploration::ExplorationLo
                 {"escapes", r.counters.escapes},
                 {"recoveries", r.counters.recoveries},
                 {"stuck_reselections", r.counters.stuck_reselections},
+                {"back_ups_blocked", r.counters.back_ups_blocked},
                 {"guard_stops", r.counters.guard_stops},
                 {"guard_steers", r.counters.guard_steers},
                 {"frontier_left", r.frontier_left},

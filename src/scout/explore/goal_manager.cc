@@ -24,6 +24,7 @@ void Validate(const GoalManagerOptions& o) {
   CheckAtLeast(g, "back_up_distance_m", o.back_up_distance_m, 0.0);
   CheckAtLeast(g, "back_up_speed_mps", o.back_up_speed_mps, 0.0);
   CheckAtLeast(g, "back_up_timeout_s", o.back_up_timeout_s, 0.0);
+  CheckAtLeast(g, "back_up_look_behind_m", o.back_up_look_behind_m, 0.0);
   CheckAtLeast(g, "close_stuck_passage_radius_m", o.close_stuck_passage_radius_m, 0.0);
   CheckAtLeast(g, "goal_frontier_radius_m", o.goal_frontier_radius_m, 0.0);
   CheckAtLeast(g, "goal_switch_margin", o.goal_switch_margin, 0.0);
@@ -395,6 +396,25 @@ void GoalManager::FailGoal(const ExploreInput& in) {
   EndGoal(ExploreState::kFailed);
 }
 
+bool GoalManager::BlockedBehind(const geometry::Rigid2d& pose) const {
+  const double look_m = options_.back_up_look_behind_m;
+  if (look_m <= 0.0 || !map_) return false;
+  const double radius_m = map_->options().robot_radius_m;
+  const Eigen::Vector2d centre = pose * Eigen::Vector2d(-0.5 * look_m, 0.0);
+  const geometry::Rigid2d robot_from_map = pose.inverse();
+  bool blocked = false;
+  ForEachCellWithin(map_->limits(), centre, radius_m + 0.5 * look_m, [&](const grid::CellIndex& c) {
+    if (blocked || map_->state(map_->limits().FlatIndex(c)) != grid::CellState::kOccupied) return;
+    // In the robot's frame: behind it, and within the radius of the segment
+    // from its centre to look_m behind.
+    const Eigen::Vector2d q = robot_from_map * map_->limits().CellCenter(c);
+    if (q.x() >= 0.0) return;
+    const double along = std::max(q.x(), -look_m);
+    blocked = (q - Eigen::Vector2d(along, 0.0)).norm() < radius_m;
+  });
+  return blocked;
+}
+
 void GoalManager::EndStuckGoal(const ExploreInput& in) {
   if (state_ == ExploreState::kReturning) return FailGoal(in);
   const Eigen::Vector2d goal = Resolve(*goal_, in.submaps);
@@ -412,7 +432,9 @@ void GoalManager::Drive(const ExploreInput& in, ExploreStatus& status) {
   const Eigen::Vector2d here = in.robot_pose.translation();
   if (backing_up_since_) {
     const auto [since_s, from] = *backing_up_since_;
-    if ((here - from).norm() >= options_.back_up_distance_m ||
+    const bool blocked = BlockedBehind(in.robot_pose);
+    counters_.back_ups_blocked += blocked;
+    if (blocked || (here - from).norm() >= options_.back_up_distance_m ||
         in.time_s - since_s >= options_.back_up_timeout_s) {
       backing_up_since_.reset();
       moving_since_.reset();
@@ -476,7 +498,7 @@ void GoalManager::Drive(const ExploreInput& in, ExploreStatus& status) {
     ++counters_.recoveries;
     backing_up_since_ = {in.time_s, here};
     status.command = {};
-    status.command.linear_mps = -options_.back_up_speed_mps;
+    if (!BlockedBehind(in.robot_pose)) status.command.linear_mps = -options_.back_up_speed_mps;
   }
 }
 

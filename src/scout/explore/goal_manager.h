@@ -66,6 +66,11 @@ struct GoalManagerOptions {
   double back_up_distance_m = 0.3;
   double back_up_speed_mps = 0.15;
   double back_up_timeout_s = 4.0;
+  // The lidar sees only ahead: backing up stops early when the map holds an
+  // occupied cell behind the robot (rear half) within its radius of the path
+  // the next back_up_look_behind_m would sweep. Office seed 3's nearest-
+  // frontier run backed into a wall it had mapped (one collision). 0: blind.
+  double back_up_look_behind_m = 0.10;
   // Where the robot got stuck (the back-up began), the narrow-passage cells
   // within this radius (metres) are closed to planning; they reopen, as
   // failed goals do, when the map around them changes (failed_goals' retry
@@ -141,6 +146,7 @@ struct ExploreCounters {
   int escapes = 0;             // searches that started by leaving the band or a pocket
   int recoveries = 0;          // back-ups after the robot got stuck (closing its passage)
   int stuck_reselections = 0;  // ... after which the goal was selected afresh, not failed
+  int back_ups_blocked = 0;    // ... that stopped early at a mapped obstacle behind
   int guard_stops = 0;         // the collision guard stopped a forward command
   int guard_steers = 0;        // control cycles it steered another arc instead
 };
@@ -246,6 +252,9 @@ class GoalManager {
   // After backing up: fails the goal if the robot got stuck on it before,
   // otherwise ends it for a fresh selection.
   void EndStuckGoal(const ExploreInput& in);
+  // True when the map shows an occupied cell behind 'pose' (rear half-plane)
+  // within the robot radius of the segment back_up_look_behind_m behind it.
+  bool BlockedBehind(const geometry::Rigid2d& pose) const;
   void Drive(const ExploreInput& input, ExploreStatus& status);
   // Returns the distance from 'goal' to the nearest frontier point.
   static double DistanceToFrontier(const Eigen::Vector2d& goal,

@@ -164,6 +164,36 @@ TEST(GoalManagerTest, StuckRobotBacksUpReselectsAndFailsTheGoalTheSecondTime) {
   EXPECT_EQ(s.blacklisted[0], *first.goal);
 }
 
+TEST(GoalManagerTest, BackingUpStopsAtAWallTheMapShowsBehind) {
+  Room room;
+  for (const bool blind : {false, true}) {
+    GoalManagerOptions o;  // stuck recovery on
+    if (blind) o.back_up_look_behind_m = 0.0;
+    GoalManager gm = MakeManager(o);
+    gm.Start();
+    // Facing the frontier (+x), its disc 2 cm from the room's wall behind it.
+    const Eigen::Vector2d robot(0.32, 2.05);
+    ExploreStatus s = gm.Update(room.Input(0, robot, true));
+    ASSERT_EQ(s.state, ExploreState::kDriving);
+    ASSERT_GT(s.command.linear_mps, 0.0);
+    for (double t = 0.5; t < o.stuck_timeout_s; t += 0.5)
+      s = gm.Update(room.Input(t, robot, false));
+    s = gm.Update(room.Input(o.stuck_timeout_s, robot, false));
+    ASSERT_EQ(gm.counters().recoveries, 1);
+    s = gm.Update(room.Input(o.stuck_timeout_s + 0.1, robot, false));
+    if (blind) {
+      EXPECT_LT(s.command.linear_mps, 0.0) << "reverses into the wall";
+      EXPECT_EQ(gm.counters().back_ups_blocked, 0);
+    } else {
+      // No reverse command; the back-up is over and the goal selected afresh.
+      EXPECT_EQ(s.state, ExploreState::kPlanning);
+      EXPECT_GE(s.command.linear_mps, 0.0);
+      EXPECT_EQ(gm.counters().back_ups_blocked, 1);
+      EXPECT_EQ(gm.counters().stuck_reselections, 1);
+    }
+  }
+}
+
 TEST(GoalManagerTest, FailedGoalMovesWithItsSubmapAndIsRetriedAfterTheMapChanges) {
   Room room;
   GoalManager gm = MakeManager();
