@@ -400,19 +400,27 @@ bool GoalManager::BlockedBehind(const geometry::Rigid2d& pose) const {
   const double look_m = options_.back_up_look_behind_m;
   if (look_m <= 0.0 || !map_) return false;
   const double radius_m = map_->options().robot_radius_m;
-  const Eigen::Vector2d centre = pose * Eigen::Vector2d(-0.5 * look_m, 0.0);
   const geometry::Rigid2d robot_from_map = pose.inverse();
-  bool blocked = false;
-  ForEachCellWithin(map_->limits(), centre, radius_m + 0.5 * look_m, [&](const grid::CellIndex& c) {
-    if (blocked || map_->state(map_->limits().FlatIndex(c)) != grid::CellState::kOccupied) return;
-    // In the robot's frame: behind it, and within the radius of the segment
-    // from its centre to look_m behind.
-    const Eigen::Vector2d q = robot_from_map * map_->limits().CellCenter(c);
-    if (q.x() >= 0.0) return;
-    const double along = std::max(q.x(), -look_m);
-    blocked = (q - Eigen::Vector2d(along, 0.0)).norm() < radius_m;
-  });
-  return blocked;
+  // Nearest occupied cell centre to the robot now (any side), and to the
+  // segment it would sweep backing up (rear half only).
+  double now_m = std::numeric_limits<double>::infinity();
+  double behind_m = now_m;
+  ForEachCellWithin(map_->limits(), pose.translation(), radius_m + look_m,
+                    [&](const grid::CellIndex& c) {
+                      if (map_->state(map_->limits().FlatIndex(c)) != grid::CellState::kOccupied) {
+                        return;
+                      }
+                      const Eigen::Vector2d q = robot_from_map * map_->limits().CellCenter(c);
+                      now_m = std::min(now_m, q.norm());
+                      if (q.x() >= 0.0) return;
+                      const double along = std::max(q.x(), -look_m);
+                      behind_m = std::min(behind_m, (q - Eigen::Vector2d(along, 0.0)).norm());
+                    });
+  // Blocked when backing up would bring the disc onto a mapped obstacle,
+  // closer by more than half the look-behind than any is now: where the map
+  // has the disc on a wall already (the map's error: the robot stands
+  // there), backing along it makes nothing worse.
+  return behind_m < radius_m && behind_m < now_m - 0.5 * look_m;
 }
 
 void GoalManager::EndStuckGoal(const ExploreInput& in) {

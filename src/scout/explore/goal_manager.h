@@ -68,8 +68,9 @@ struct GoalManagerOptions {
   double back_up_timeout_s = 4.0;
   // The lidar sees only ahead: backing up stops early when the map holds an
   // occupied cell behind the robot (rear half) within its radius of the path
-  // the next back_up_look_behind_m would sweep. Office seed 3's nearest-
-  // frontier run backed into a wall it had mapped (one collision). 0: blind.
+  // the next back_up_look_behind_m would sweep, closer than any mapped
+  // obstacle is now (a disc the map already has on a wall may back along it). Office seed 3's
+  // nearest- frontier run backed into a wall it had mapped (one collision). 0: blind.
   double back_up_look_behind_m = 0.10;
   // Where the robot got stuck (the back-up began), the narrow-passage cells
   // within this radius (metres) are closed to planning; they reopen, as
@@ -253,7 +254,8 @@ class GoalManager {
   // otherwise ends it for a fresh selection.
   void EndStuckGoal(const ExploreInput& in);
   // True when the map shows an occupied cell behind 'pose' (rear half-plane)
-  // within the robot radius of the segment back_up_look_behind_m behind it.
+  // within the robot radius of the segment back_up_look_behind_m behind it
+  // and closer to it than any occupied cell is to the robot now.
   bool BlockedBehind(const geometry::Rigid2d& pose) const;
   void Drive(const ExploreInput& input, ExploreStatus& status);
   // Returns the distance from 'goal' to the nearest frontier point.

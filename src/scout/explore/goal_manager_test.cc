@@ -192,6 +192,23 @@ TEST(GoalManagerTest, BackingUpStopsAtAWallTheMapShowsBehind) {
       EXPECT_EQ(gm.counters().stuck_reselections, 1);
     }
   }
+  // Past an obstacle the map already has under the disc (its error: the
+  // robot stands there), backing up is not blocked.
+  Room overlapped = room;
+  overlapped.b.Wall(9, 21, 9, 21);  // 0.14 m behind-left of the robot's centre
+  GoalManagerOptions o;
+  GoalManager gm = MakeManager(o);
+  gm.Start();
+  const Eigen::Vector2d robot = room.b.At(10, 20);
+  ExploreStatus s = gm.Update(overlapped.Input(0, robot, true));
+  ASSERT_EQ(s.state, ExploreState::kDriving);
+  for (double t = 0.5; t <= o.stuck_timeout_s; t += 0.5) {
+    s = gm.Update(overlapped.Input(t, robot, false));
+  }
+  ASSERT_EQ(gm.counters().recoveries, 1);
+  s = gm.Update(overlapped.Input(o.stuck_timeout_s + 0.6, robot, false));
+  EXPECT_LT(s.command.linear_mps, 0.0);
+  EXPECT_EQ(gm.counters().back_ups_blocked, 0);
 }
 
 TEST(GoalManagerTest, FailedGoalMovesWithItsSubmapAndIsRetriedAfterTheMapChanges) {
