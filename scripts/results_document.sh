@@ -36,9 +36,10 @@ not_run() {
 # the true world through the submap that mapped it (the unreachable count).
 EXPLORE_BEHAVIOUR_COMMIT=1d008ff
 # d725b7b (a goal fails on its second stuck recovery, not its first) and 8a6e5c2 (backing
-# up stops at a mapped obstacle behind) change only runs with a stuck recovery, 137c2f9 (failed goals next to reachable frontier tried once more
-# before finishing) only runs that ended with reachable frontier left: an older run
-# without them would repeat exactly, one with them is stale.
+# up stops at a mapped obstacle behind) change only runs with a stuck recovery; 137c2f9
+# (failed goals next to reachable frontier tried once more before finishing) only runs
+# that ended with reachable frontier left. An older run without them would repeat
+# exactly; one with them is stale.
 EXPLORE_STUCK_COMMIT=8a6e5c2
 EXPLORE_RETRY_COMMIT=137c2f9
 stale_runs() {

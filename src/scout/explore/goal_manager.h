@@ -69,8 +69,9 @@ struct GoalManagerOptions {
   // The lidar sees only ahead: backing up stops early when the map holds an
   // occupied cell behind the robot (rear half) within its radius of the path
   // the next back_up_look_behind_m would sweep, closer than any mapped
-  // obstacle is now (a disc the map already has on a wall may back along it). Office seed 3's
-  // nearest- frontier run backed into a wall it had mapped (one collision). 0: blind.
+  // obstacle is now (a disc the map already has on a wall may back along
+  // it). Only as good as the map: office seed 3's nearest-frontier run still
+  // backs into a wall its map placed 0.2 m too far (one collision). 0: blind.
   double back_up_look_behind_m = 0.10;
   // Where the robot got stuck (the back-up began), the narrow-passage cells
   // within this radius (metres) are closed to planning; they reopen, as
