@@ -425,12 +425,9 @@ bool GoalManager::BlockedBehind(const geometry::Rigid2d& pose) const {
 
 void GoalManager::EndStuckGoal(const ExploreInput& in) {
   if (state_ == ExploreState::kReturning) return FailGoal(in);
-  const Eigen::Vector2d goal = Resolve(*goal_, in.submaps);
-  const double radius2 =
-      options_.failed_goals.blacklist_radius_m * options_.failed_goals.blacklist_radius_m;
-  for (const AnchoredPoint& p : stuck_goals_) {
-    if ((Resolve(p, in.submaps) - goal).squaredNorm() <= radius2) return FailGoal(in);
-  }
+  std::vector<Eigen::Vector2d> stuck_before;
+  for (const AnchoredPoint& p : stuck_goals_) stuck_before.push_back(Resolve(p, in.submaps));
+  if (failed_.IsNear(Resolve(*goal_, in.submaps), stuck_before)) return FailGoal(in);
   stuck_goals_.push_back(*goal_);
   ++counters_.stuck_reselections;
   EndGoal(ExploreState::kPlanning);
