@@ -22,10 +22,51 @@ geometry::Rigid2d ExactStrategy::Relative(int i, int j) const {
   return catalog_.submap(j).global_pose_inverse * catalog_.submap(i).global_pose;
 }
 
-void ExactStrategy::SetObjects(int i, uint32_t k, bool before, bool after) {
-  if (before == after) return;
-  objectors_[i][k] += after ? 1 : -1;
-  is_frontier_[i][k] = objectors_[i][k] == 0;
+void ExactStrategy::Observe(int i, uint32_t k, int j, bool objects) {
+  int32_t& witness = witness_[i][k];
+  if (objects) {
+    if (witness == kNoWitness || witness == kLost) {
+      witness = j;
+      is_frontier_[i][k] = 0;
+    }
+  } else if (witness == j) {
+    witness = kLost;
+    lost_.push_back(k);
+  }
+}
+
+void ExactStrategy::ResolveLost(int i) {
+  if (lost_.empty()) return;
+  const std::vector<Eigen::Vector2d>& points = catalog_.submap(i).frontier.points_m;
+  const double slack = catalog_.options().exact_slack_m;
+  std::vector<uint32_t> lost;
+  lost.swap(lost_);
+  for (const uint32_t k : lost) {
+    // Another watch may have objected since the point was queued.
+    if (witness_[i][k] != kLost) continue;
+    const Eigen::Vector2d& p = points[k];
+    for (Watch& w : watches_[i]) {
+      Mark(i, k);
+      if (catalog_.submap(w.j).answers.Objects(catalog_.PointInSubmap(i, p, w.j))) {
+        AddEntry(i, k, &w, catalog_.submap(w.j).answers, slack);  // stores it, sets the witness
+        break;
+      }
+    }
+    if (witness_[i][k] != kLost) continue;
+    // Nobody objects: a frontier, which every watch must store or cover.
+    witness_[i][k] = kNoWitness;
+    is_frontier_[i][k] = 1;
+    for (Watch& w : watches_[i]) AddEntry(i, k, &w, catalog_.submap(w.j).answers, slack);
+  }
+  // Lookups above found no witness that stops objecting (answers are current).
+}
+
+void ExactStrategy::EnsureSorted(Watch* w) {
+  if (w->sorted == w->entries.size()) return;
+  const auto middle = w->entries.begin() + static_cast<std::ptrdiff_t>(w->sorted);
+  std::sort(middle, w->entries.end(), ByKey<Entry, Entry>);
+  std::inplace_merge(w->entries.begin(), middle, w->entries.end(), ByKey<Entry, Entry>);
+  w->sorted = w->entries.size();
 }
 
 void ExactStrategy::Mark(int i, uint32_t k) {
@@ -60,7 +101,6 @@ void ExactStrategy::Anchor(int i, Watch* w) {
   const std::vector<Eigen::Vector2d>& points = catalog_.submap(i).frontier.points_m;
   const AnswerMap& answers = catalog_.submap(w->j).answers;
   const double slack = catalog_.options().exact_slack_m;
-  for (const Entry& e : w->entries) SetObjects(i, e.point, e.objects, false);
   w->entries.clear();
   const geometry::Rigid2d rel = Relative(i, w->j);
   w->coverage_anchor = w->sort_anchor = rel;
@@ -75,8 +115,11 @@ void ExactStrategy::Anchor(int i, Watch* w) {
     w->radius_m = std::max(w->radius_m, (rel * p - w->center).norm());
   }
   w->radius_m += kSafety_m;
-  for (uint32_t k = 0; k < points.size(); ++k) AddEntry(i, k, w, answers, slack);
+  for (uint32_t k = 0; k < points.size(); ++k) {
+    if (Tracks(i, k, w->j)) AddEntry(i, k, w, answers, slack);
+  }
   std::sort(w->entries.begin(), w->entries.end(), ByKey<Entry, Entry>);
+  w->sorted = w->entries.size();
 }
 
 bool ExactStrategy::AddEntry(int i, uint32_t k, Watch* w, const AnswerMap& answers,
@@ -85,6 +128,7 @@ bool ExactStrategy::AddEntry(int i, uint32_t k, Watch* w, const AnswerMap& answe
   const Eigen::Vector2d q = catalog_.PointInSubmap(i, p, w->j);
   Mark(i, k);
   const bool objects = answers.Objects(q);
+  Observe(i, k, w->j, objects);
   const double margin = answers.Margin(q) - kSafety_m;
   // Not stored: it keeps its answer while no point moves by 'slack' from the
   // coverage anchor (checked per pair).
@@ -98,7 +142,6 @@ bool ExactStrategy::AddEntry(int i, uint32_t k, Watch* w, const AnswerMap& answe
   e.point = k;
   e.objects = objects;
   w->entries.push_back(e);
-  SetObjects(i, k, false, objects);
   return true;
 }
 
@@ -106,7 +149,7 @@ void ExactStrategy::Reevaluate(int i, const Watch& w, const AnswerMap& answers,
                                const Eigen::Vector2d& p, const Eigen::Vector2d& q, Entry* e) {
   Mark(i, e->point);
   const bool objects = answers.Objects(q);
-  SetObjects(i, e->point, e->objects, objects);
+  Observe(i, e->point, w.j, objects);
   const double margin = std::min(answers.Margin(q) - kSafety_m, MarginCap());
   e->objects = objects;
   e->ref_x_m = static_cast<float>(q.x());
@@ -124,6 +167,7 @@ void ExactStrategy::Rekey(int i, Watch* w) {
     e.key_m = static_cast<float>(e.ref_margin_m - (RefOf(e) - rel * points[e.point]).norm());
   }
   std::sort(w->entries.begin(), w->entries.end(), ByKey<Entry, Entry>);
+  w->sorted = w->entries.size();
 }
 
 void ExactStrategy::Refresh(int i, Watch* w) {
@@ -139,6 +183,7 @@ void ExactStrategy::Refresh(int i, Watch* w) {
     Anchor(i, w);
     return;
   }
+  EnsureSorted(w);
   const double bound =
       geometry::MaxDisplacementWithin(rel * w->sort_anchor.inverse(), w->sort_center, w->radius_m);
   const auto end = std::upper_bound(w->entries.begin(), w->entries.end(), bound,
@@ -184,12 +229,16 @@ void ExactStrategy::ReviewNearChange(int i, Watch* w, const geometry::Box2d& reg
   }
   // Unstored points were safe for 'slack' around their coverage position under
   // the old answers; near the change that no longer holds.
+  // Points the watch does not track (witnessed elsewhere) need no answer here.
   for (uint32_t k = 0; k < points.size(); ++k) {
-    if (has_entry[k]) continue;
+    if (has_entry[k] || !Tracks(i, k, w->j)) continue;
     if (region.DistanceTo(w->coverage_anchor * points[k]) >= slack + kSafety_m) continue;
     changed |= AddEntry(i, k, w, answers, slack);
   }
-  if (changed) std::sort(w->entries.begin(), w->entries.end(), ByKey<Entry, Entry>);
+  if (changed || w->sorted != w->entries.size()) {
+    std::sort(w->entries.begin(), w->entries.end(), ByKey<Entry, Entry>);
+    w->sorted = w->entries.size();
+  }
 }
 
 void ExactStrategy::UpdateWatchesOf(int i) {
@@ -198,18 +247,26 @@ void ExactStrategy::UpdateWatchesOf(int i) {
   // A pair whose boxes no longer meet has no point of i inside j's grid.
   std::erase_if(watches, [&](Watch& w) {
     if (catalog_.submap(w.j).global_box.Intersects(points_box)) return false;
-    for (const Entry& e : w.entries) SetObjects(i, e.point, e.objects, false);
+    // Nothing of i lies in j's grid: j objects nowhere.
+    for (const Entry& e : w.entries) Observe(i, e.point, w.j, false);
     std::erase(watchers_[w.j], i);
     return true;
   });
-  for (Watch& w : watches) Refresh(i, &w);
+  ResolveLost(i);
+  for (Watch& w : watches) {
+    Refresh(i, &w);
+    ResolveLost(i);
+  }
   if (catalog_.submap(i).frontier.points_m.empty()) return;
   // Marks the watched submaps so each candidate is checked in O(1).
   watched_.resize(catalog_.size(), 0);
   for (const Watch& w : watches) watched_[w.j] = 1;
   const size_t existing = watches.size();
   for (const int j : catalog_.index().Intersecting(points_box)) {
-    if (j != i && !watched_[j]) AddWatch(i, j);
+    if (j != i && !watched_[j]) {
+      AddWatch(i, j);
+      ResolveLost(i);
+    }
   }
   for (size_t k = 0; k < existing; ++k) watched_[watches_[i][k].j] = 0;
 }
@@ -225,7 +282,7 @@ void ExactStrategy::EnsureSize(int n) {
   while (static_cast<int>(watches_.size()) < n) {
     watches_.emplace_back();
     watchers_.emplace_back();
-    objectors_.emplace_back();
+    witness_.emplace_back();
     point_stamp_.emplace_back();
     submap_stamp_.push_back(0);
   }
@@ -251,40 +308,42 @@ void ExactStrategy::RemapOwnWatches(const SubmapChange& change) {
   const int j = change.id;
   const size_t n = change.previous_index.size();
   point_stamp_[j].assign(n, 0);
-  objectors_[j].assign(n, 0);
   std::vector<int> new_index_of_old;
+  // Surviving points keep their witnesses (no other submap changed); new
+  // points have none yet.
+  std::vector<int32_t> witness(n, kLost);
   for (size_t k = 0; k < n; ++k) {
     const int old = change.previous_index[k];
     if (old < 0) continue;
     if (static_cast<int>(new_index_of_old.size()) <= old) new_index_of_old.resize(old + 1, -1);
     new_index_of_old[old] = static_cast<int>(k);
+    witness[k] = witness_[j][old];
   }
+  witness_[j] = std::move(witness);
   const std::vector<Eigen::Vector2d>& points = catalog_.submap(j).frontier.points_m;
-  const double slack = catalog_.options().exact_slack_m;
   for (Watch& w : watches_[j]) {
+    EnsureSorted(&w);
     std::vector<Entry> kept;
     for (Entry e : w.entries) {
       const int k = e.point < new_index_of_old.size() ? new_index_of_old[e.point] : -1;
       if (k < 0) continue;
       e.point = static_cast<uint32_t>(k);
       kept.push_back(e);
-      if (e.objects) ++objectors_[j][k];
     }
     w.entries = std::move(kept);  // still sorted: filtering keeps the order
-    const size_t sorted = w.entries.size();
-    const AnswerMap& answers = catalog_.submap(w.j).answers;
+    w.sorted = w.entries.size();
+    // New points join the coverage disc; ResolveLost looks them up below.
     for (size_t k = 0; k < n; ++k) {
       if (change.previous_index[k] >= 0) continue;
-      // New points join the coverage disc and get looked up now.
       w.radius_m =
           std::max(w.radius_m, (w.coverage_anchor * points[k] - w.center).norm() + kSafety_m);
-      AddEntry(j, static_cast<uint32_t>(k), &w, answers, slack);
     }
-    const auto middle = w.entries.begin() + static_cast<std::ptrdiff_t>(sorted);
-    std::sort(middle, w.entries.end(), ByKey<Entry, Entry>);
-    std::inplace_merge(w.entries.begin(), middle, w.entries.end(), ByKey<Entry, Entry>);
   }
-  for (size_t k = 0; k < n; ++k) is_frontier_[j][k] = objectors_[j][k] == 0;
+  for (size_t k = 0; k < n; ++k) {
+    if (change.previous_index[k] < 0) lost_.push_back(static_cast<uint32_t>(k));
+  }
+  ResolveLost(j);
+  for (size_t k = 0; k < n; ++k) is_frontier_[j][k] = witness_[j][k] == kNoWitness;
 }
 
 UpdateCost ExactStrategy::OnSubmapChanged(const SubmapChange& change) {
@@ -297,7 +356,10 @@ UpdateCost ExactStrategy::OnSubmapChanged(const SubmapChange& change) {
   UpdateWatchesOf(j);
   // Other submaps' watches on j: j's answers changed inside the changed region.
   if (!change.changed_region.empty()) {
-    for (const int i : watchers_[j]) ReviewNearChange(i, FindWatch(i, j), change.changed_region);
+    for (const int i : watchers_[j]) {
+      ReviewNearChange(i, FindWatch(i, j), change.changed_region);
+      ResolveLost(i);
+    }
     // Submaps whose points j's (grown) grid reaches for the first time.
     const geometry::Box2d& box = catalog_.submap(j).global_box;
     for (const int i : catalog_.index().Intersecting(box)) {
@@ -306,6 +368,7 @@ UpdateCost ExactStrategy::OnSubmapChanged(const SubmapChange& change) {
         continue;
       }
       AddWatch(i, j);
+      ResolveLost(i);
     }
   }
   return EndUpdate(stopwatch.ElapsedUs());

@@ -27,6 +27,16 @@ namespace scout::frontier {
 // binary search finds the few entries that need an exact check. A pair whose
 // boxes do not meet has no point of i inside j's grid, so nothing objects.
 //
+// Witnesses. A point that is not a frontier needs one objecting submap, not
+// all answers (most points are covered several times over): each such point
+// keeps one *witness* j, whose watch holds an objecting entry for it, and only
+// that watch has to track it. The watches of the other submaps track only the
+// frontier points. When the witness stops objecting, every watch of the
+// point's submap is asked at the current poses: the first that objects becomes
+// the witness; if none does, the point is a frontier and every watch stores or
+// covers it as above. So re-anchoring a pair looks up the frontier points and
+// the points it witnesses, not all of them.
+//
 // Grid changes re-anchor the watches of the changed submap (its answers and its
 // points changed); their lookups are counted in the grid-change cost.
 class ExactStrategy : public UpdateStrategy {
@@ -55,7 +65,8 @@ class ExactStrategy : public UpdateStrategy {
     Eigen::Vector2d center = Eigen::Vector2d::Zero();       // disc holding coverage_anchor * p
     Eigen::Vector2d sort_center = Eigen::Vector2d::Zero();  // the same disc under sort_anchor
     double radius_m = 0.0;
-    std::vector<Entry> entries;  // ascending key_m
+    std::vector<Entry> entries;  // ascending key_m up to 'sorted', then unsorted
+    size_t sorted = 0;
     // Pose versions of i and j when the watch was last brought up to date:
     // while neither submap moves, the watch needs no work.
     uint64_t seen_version_i = 0;
@@ -68,9 +79,23 @@ class ExactStrategy : public UpdateStrategy {
   // Brings one watch up to date with the current poses.
   void Refresh(int i, Watch* watch);
   // Looks up point k of i in the watch's submap and stores an entry unless the
-  // slack covers it.
+  // slack covers it (objecting answers are always stored).
   // Returns true if it stored one.
   bool AddEntry(int i, uint32_t k, Watch* watch, const AnswerMap& answers, double slack_m);
+  // Whether the watch on j must track point k of i: k is a frontier or j is
+  // its witness.
+  bool Tracks(int i, uint32_t k, int j) const {
+    return witness_[i][k] == kNoWitness || witness_[i][k] == j;
+  }
+  // Records that j now answers 'objects' for point k of i: a frontier point
+  // gets j as its witness; a point whose witness j stopped objecting is queued
+  // for ResolveLost.
+  void Observe(int i, uint32_t k, int j, bool objects);
+  // Finds a new witness for every queued point of i, or makes it a frontier
+  // tracked by every watch. Called where no watch's entries are being iterated.
+  void ResolveLost(int i);
+  // Sorts the unsorted tail of the watch's entries into place.
+  static void EnsureSorted(Watch* watch);
   // Stored margins are capped (a smaller margin is always safe), which bounds
   // how far from a grid change a watch can be affected.
   double MarginCap() const { return 2.0 * catalog_.options().exact_slack_m; }
@@ -94,15 +119,19 @@ class ExactStrategy : public UpdateStrategy {
   // Creates watches for every submap whose box meets i's points and refreshes
   // the existing ones.
   void UpdateWatchesOf(int i);
-  void SetObjects(int i, uint32_t k, bool before, bool after);
   void Mark(int i, uint32_t k);
   void BeginUpdate();
   UpdateCost EndUpdate(double time_us);
 
-  std::vector<std::vector<Watch>> watches_;       // by submap i (whose points are watched)
-  std::vector<std::vector<int>> watchers_;        // by submap j: every i with a watch on j
-  std::vector<uint8_t> watched_;                  // scratch of UpdateWatchesOf, all 0 between calls
-  std::vector<std::vector<uint16_t>> objectors_;  // per point: watches that object
+  std::vector<std::vector<Watch>> watches_;  // by submap i (whose points are watched)
+  std::vector<std::vector<int>> watchers_;   // by submap j: every i with a watch on j
+  std::vector<uint8_t> watched_;             // scratch of UpdateWatchesOf, all 0 between calls
+  // Per point: the submap whose watch holds an objecting entry for it,
+  // kNoWitness for a global frontier, kLost while queued in lost_.
+  static constexpr int32_t kNoWitness = -1;
+  static constexpr int32_t kLost = -2;
+  std::vector<std::vector<int32_t>> witness_;
+  std::vector<uint32_t> lost_;  // points (of the submap being updated) without a witness
   // Distinct points / submaps touched in the current update.
   std::vector<std::vector<uint32_t>> point_stamp_;
   std::vector<uint32_t> submap_stamp_;
