@@ -1,6 +1,7 @@
 #include "scout/frontier/exact_strategy.h"
 
 #include <algorithm>
+#include <limits>
 #include <numeric>
 
 #include "scout/frontier/stopwatch.h"
@@ -11,8 +12,6 @@ namespace {
 // Absorbs the float rounding of stored positions and margins (values of a few
 // metres keep ~1e-6 m in float); real margins are multiples of millimetres.
 constexpr double kSafety_m = 1e-5;
-
-bool ByKey(const auto& a, const auto& b) { return a.key_m < b.key_m; }
 
 Eigen::Vector2d RefOf(const auto& e) { return {e.ref_x_m, e.ref_y_m}; }
 
@@ -61,12 +60,19 @@ void ExactStrategy::ResolveLost(int i) {
   // Lookups above found no witness that stops objecting (answers are current).
 }
 
-void ExactStrategy::EnsureSorted(Watch* w) {
-  if (w->sorted == w->entries.size()) return;
-  const auto middle = w->entries.begin() + static_cast<std::ptrdiff_t>(w->sorted);
-  std::sort(middle, w->entries.end(), ByKey<Entry, Entry>);
-  std::inplace_merge(w->entries.begin(), middle, w->entries.end(), ByKey<Entry, Entry>);
-  w->sorted = w->entries.size();
+const ExactStrategy::PointsDisc& ExactStrategy::DiscOf(int i) {
+  PointsDisc& disc = discs_[i];
+  if (disc.valid) return disc;
+  const std::vector<Eigen::Vector2d>& points = catalog_.submap(i).frontier.points_m;
+  Eigen::Vector2d sum = Eigen::Vector2d::Zero();
+  for (const Eigen::Vector2d& p : points) sum += p;
+  disc.center = points.empty() ? sum : Eigen::Vector2d(sum / static_cast<double>(points.size()));
+  disc.radius_m = 0.0;
+  for (const Eigen::Vector2d& p : points) {
+    disc.radius_m = std::max(disc.radius_m, (p - disc.center).norm());
+  }
+  disc.valid = true;
+  return disc;
 }
 
 void ExactStrategy::Mark(int i, uint32_t k) {
@@ -103,23 +109,18 @@ void ExactStrategy::Anchor(int i, Watch* w) {
   const double slack = catalog_.options().exact_slack_m;
   w->entries.clear();
   const geometry::Rigid2d rel = Relative(i, w->j);
-  w->coverage_anchor = w->sort_anchor = rel;
+  w->coverage_anchor = w->key_anchor = rel;
   w->seen_version_i = catalog_.submap(i).pose_version;
   w->seen_version_j = catalog_.submap(w->j).pose_version;
-  Eigen::Vector2d sum = Eigen::Vector2d::Zero();
-  for (const Eigen::Vector2d& p : points) sum += rel * p;
-  w->center = points.empty() ? sum : Eigen::Vector2d(sum / static_cast<double>(points.size()));
-  w->sort_center = w->center;
-  w->radius_m = 0.0;
-  for (const Eigen::Vector2d& p : points) {
-    w->radius_m = std::max(w->radius_m, (rel * p - w->center).norm());
-  }
-  w->radius_m += kSafety_m;
+  // The points' disc is fixed in i's frame; only its centre moves.
+  const PointsDisc& disc = DiscOf(i);
+  w->center = rel * disc.center;
+  w->key_center = w->center;
+  w->min_key_m = std::numeric_limits<float>::infinity();
+  w->radius_m = disc.radius_m + kSafety_m;
   for (uint32_t k = 0; k < points.size(); ++k) {
     if (Tracks(i, k, w->j)) AddEntry(i, k, w, answers, slack);
   }
-  std::sort(w->entries.begin(), w->entries.end(), ByKey<Entry, Entry>);
-  w->sorted = w->entries.size();
 }
 
 bool ExactStrategy::AddEntry(int i, uint32_t k, Watch* w, const AnswerMap& answers,
@@ -138,15 +139,16 @@ bool ExactStrategy::AddEntry(int i, uint32_t k, Watch* w, const AnswerMap& answe
   e.ref_y_m = static_cast<float>(q.y());
   const double stored = std::min(margin, MarginCap());
   e.ref_margin_m = static_cast<float>(stored);
-  e.key_m = static_cast<float>(stored - (RefOf(e) - w->sort_anchor * p).norm());
+  e.key_m = static_cast<float>(stored - (RefOf(e) - w->key_anchor * p).norm());
+  w->min_key_m = std::min(w->min_key_m, e.key_m);
   e.point = k;
   e.objects = objects;
   w->entries.push_back(e);
   return true;
 }
 
-void ExactStrategy::Reevaluate(int i, const Watch& w, const AnswerMap& answers,
-                               const Eigen::Vector2d& p, const Eigen::Vector2d& q, Entry* e) {
+void ExactStrategy::Reevaluate(int i, Watch& w, const AnswerMap& answers, const Eigen::Vector2d& p,
+                               const Eigen::Vector2d& q, Entry* e) {
   Mark(i, e->point);
   const bool objects = answers.Objects(q);
   Observe(i, e->point, w.j, objects);
@@ -155,19 +157,20 @@ void ExactStrategy::Reevaluate(int i, const Watch& w, const AnswerMap& answers,
   e->ref_x_m = static_cast<float>(q.x());
   e->ref_y_m = static_cast<float>(q.y());
   e->ref_margin_m = static_cast<float>(margin);
-  e->key_m = static_cast<float>(margin - (RefOf(*e) - w.sort_anchor * p).norm());
+  e->key_m = static_cast<float>(margin - (RefOf(*e) - w.key_anchor * p).norm());
+  w.min_key_m = std::min(w.min_key_m, e->key_m);
 }
 
 void ExactStrategy::Rekey(int i, Watch* w) {
   const std::vector<Eigen::Vector2d>& points = catalog_.submap(i).frontier.points_m;
   const geometry::Rigid2d rel = Relative(i, w->j);
-  w->sort_center = rel * (w->coverage_anchor.inverse() * w->center);
-  w->sort_anchor = rel;
+  w->key_center = rel * (w->coverage_anchor.inverse() * w->center);
+  w->key_anchor = rel;
+  w->min_key_m = std::numeric_limits<float>::infinity();
   for (Entry& e : w->entries) {
     e.key_m = static_cast<float>(e.ref_margin_m - (RefOf(e) - rel * points[e.point]).norm());
+    w->min_key_m = std::min(w->min_key_m, e.key_m);
   }
-  std::sort(w->entries.begin(), w->entries.end(), ByKey<Entry, Entry>);
-  w->sorted = w->entries.size();
 }
 
 void ExactStrategy::Refresh(int i, Watch* w) {
@@ -183,28 +186,29 @@ void ExactStrategy::Refresh(int i, Watch* w) {
     Anchor(i, w);
     return;
   }
-  EnsureSorted(w);
   const double bound =
-      geometry::MaxDisplacementWithin(rel * w->sort_anchor.inverse(), w->sort_center, w->radius_m);
-  const auto end = std::upper_bound(w->entries.begin(), w->entries.end(), bound,
-                                    [](double b, const Entry& e) { return b < e.key_m; });
-  if (end == w->entries.begin()) return;
+      geometry::MaxDisplacementWithin(rel * w->key_anchor.inverse(), w->key_center, w->radius_m);
+  if (bound <= w->min_key_m) return;
   const std::vector<Eigen::Vector2d>& points = catalog_.submap(i).frontier.points_m;
   const AnswerMap& answers = catalog_.submap(w->j).answers;
-  for (auto it = w->entries.begin(); it != end; ++it) {
-    const Eigen::Vector2d& p = points[it->point];
+  // A pass over the keys (no transforms) finds the entries the bound does not
+  // clear; only those are checked exactly.
+  size_t checked = 0;
+  float min_key_m = std::numeric_limits<float>::infinity();
+  for (Entry& e : w->entries) {
+    if (e.key_m >= bound) {
+      min_key_m = std::min(min_key_m, e.key_m);
+      continue;
+    }
+    ++checked;
+    const Eigen::Vector2d& p = points[e.point];
     const Eigen::Vector2d q = catalog_.PointInSubmap(i, p, w->j);
-    if ((q - RefOf(*it)).norm() < it->ref_margin_m) continue;
-    Reevaluate(i, *w, answers, p, q, &*it);
+    if ((q - RefOf(e)).norm() >= e.ref_margin_m) Reevaluate(i, *w, answers, p, q, &e);
+    min_key_m = std::min(min_key_m, e.key_m);
   }
-  const size_t checked = static_cast<size_t>(end - w->entries.begin());
+  w->min_key_m = min_key_m;
   // When most entries need a check each round, move the keys to the current pose.
-  if (2 * checked > w->entries.size()) {
-    Rekey(i, w);
-  } else {
-    std::sort(w->entries.begin(), end, ByKey<Entry, Entry>);
-    std::inplace_merge(w->entries.begin(), end, w->entries.end(), ByKey<Entry, Entry>);
-  }
+  if (2 * checked > w->entries.size()) Rekey(i, w);
 }
 
 void ExactStrategy::ReviewNearChange(int i, Watch* w, const geometry::Box2d& region) {
@@ -216,7 +220,6 @@ void ExactStrategy::ReviewNearChange(int i, Watch* w, const geometry::Box2d& reg
   const std::vector<Eigen::Vector2d>& points = catalog_.submap(i).frontier.points_m;
   const AnswerMap& answers = catalog_.submap(w->j).answers;
   std::vector<uint8_t> has_entry(points.size(), 0);
-  bool changed = false;
   for (Entry& e : w->entries) {
     has_entry[e.point] = 1;
     // The recorded answer holds at q_ref itself and within its margin; a
@@ -225,7 +228,6 @@ void ExactStrategy::ReviewNearChange(int i, Watch* w, const geometry::Box2d& reg
     if (to_region > 0.0 && to_region >= e.ref_margin_m) continue;
     const Eigen::Vector2d& p = points[e.point];
     Reevaluate(i, *w, answers, p, catalog_.PointInSubmap(i, p, w->j), &e);
-    changed = true;
   }
   // Unstored points were safe for 'slack' around their coverage position under
   // the old answers; near the change that no longer holds.
@@ -233,11 +235,7 @@ void ExactStrategy::ReviewNearChange(int i, Watch* w, const geometry::Box2d& reg
   for (uint32_t k = 0; k < points.size(); ++k) {
     if (has_entry[k] || !Tracks(i, k, w->j)) continue;
     if (region.DistanceTo(w->coverage_anchor * points[k]) >= slack + kSafety_m) continue;
-    changed |= AddEntry(i, k, w, answers, slack);
-  }
-  if (changed || w->sorted != w->entries.size()) {
-    std::sort(w->entries.begin(), w->entries.end(), ByKey<Entry, Entry>);
-    w->sorted = w->entries.size();
+    AddEntry(i, k, w, answers, slack);
   }
 }
 
@@ -283,6 +281,7 @@ void ExactStrategy::EnsureSize(int n) {
     watches_.emplace_back();
     watchers_.emplace_back();
     witness_.emplace_back();
+    discs_.emplace_back();
     point_stamp_.emplace_back();
     submap_stamp_.push_back(0);
   }
@@ -322,7 +321,6 @@ void ExactStrategy::RemapOwnWatches(const SubmapChange& change) {
   witness_[j] = std::move(witness);
   const std::vector<Eigen::Vector2d>& points = catalog_.submap(j).frontier.points_m;
   for (Watch& w : watches_[j]) {
-    EnsureSorted(&w);
     std::vector<Entry> kept;
     for (Entry e : w.entries) {
       const int k = e.point < new_index_of_old.size() ? new_index_of_old[e.point] : -1;
@@ -330,8 +328,7 @@ void ExactStrategy::RemapOwnWatches(const SubmapChange& change) {
       e.point = static_cast<uint32_t>(k);
       kept.push_back(e);
     }
-    w.entries = std::move(kept);  // still sorted: filtering keeps the order
-    w.sorted = w.entries.size();
+    w.entries = std::move(kept);
     // New points join the coverage disc; ResolveLost looks them up below.
     for (size_t k = 0; k < n; ++k) {
       if (change.previous_index[k] >= 0) continue;
@@ -352,6 +349,7 @@ UpdateCost ExactStrategy::OnSubmapChanged(const SubmapChange& change) {
   const int j = change.id;
   EnsureSize(catalog_.size());
   RemapPoints(change);  // sizes is_frontier_ / hint_; answers are rebuilt below
+  discs_[j].valid = false;
   RemapOwnWatches(change);
   UpdateWatchesOf(j);
   // Other submaps' watches on j: j's answers changed inside the changed region.

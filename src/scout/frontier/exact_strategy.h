@@ -22,9 +22,10 @@ namespace scout::frontier {
 // have changed. Points far from every other-answer cell (margin >= slack S)
 // are not stored; they are covered as long as no point of i moved by S in j's
 // frame since the watch was anchored, which one bound per pair proves
-// (geometry::MaxDisplacementWithin). Entries are sorted by a key that lower-
-// bounds their margin relative to the pair's current motion bound, so one
-// binary search finds the few entries that need an exact check. A pair whose
+// (geometry::MaxDisplacementWithin). Each entry keeps a key that lower-bounds
+// its margin left after the pair's motion since the key anchor, so one pass
+// over the keys, without lookups or transforms, finds the few entries that
+// need an exact check (none if the bound is below the smallest key). A pair whose
 // boxes do not meet has no point of i inside j's grid, so nothing objects.
 //
 // Witnesses. A point that is not a frontier needs one objecting submap, not
@@ -51,7 +52,7 @@ class ExactStrategy : public UpdateStrategy {
 
  private:
   struct Entry {
-    float key_m;         // lower bound of the margin relative to the sort anchor
+    float key_m;         // lower bound of the margin relative to the key anchor
     float ref_margin_m;  // margin of j at q_ref
     float ref_x_m;       // q_ref, in j's frame
     float ref_y_m;
@@ -61,12 +62,12 @@ class ExactStrategy : public UpdateStrategy {
   struct Watch {
     int j = -1;
     geometry::Rigid2d coverage_anchor;  // relative pose when all points were looked up
-    geometry::Rigid2d sort_anchor;      // relative pose the entry keys refer to
-    Eigen::Vector2d center = Eigen::Vector2d::Zero();       // disc holding coverage_anchor * p
-    Eigen::Vector2d sort_center = Eigen::Vector2d::Zero();  // the same disc under sort_anchor
+    geometry::Rigid2d key_anchor;       // relative pose the entry keys refer to
+    Eigen::Vector2d center = Eigen::Vector2d::Zero();      // disc holding coverage_anchor * p
+    Eigen::Vector2d key_center = Eigen::Vector2d::Zero();  // the same disc under key_anchor
     double radius_m = 0.0;
-    std::vector<Entry> entries;  // ascending key_m up to 'sorted', then unsorted
-    size_t sorted = 0;
+    std::vector<Entry> entries;
+    float min_key_m = 0.0f;  // no entry's key is smaller
     // Pose versions of i and j when the watch was last brought up to date:
     // while neither submap moves, the watch needs no work.
     uint64_t seen_version_i = 0;
@@ -94,20 +95,26 @@ class ExactStrategy : public UpdateStrategy {
   // Finds a new witness for every queued point of i, or makes it a frontier
   // tracked by every watch. Called where no watch's entries are being iterated.
   void ResolveLost(int i);
-  // Sorts the unsorted tail of the watch's entries into place.
-  static void EnsureSorted(Watch* watch);
+  // A disc centred at the mean of submap i's points that holds them
+  // all, in i's frame (cached until i's points change).
+  struct PointsDisc {
+    Eigen::Vector2d center = Eigen::Vector2d::Zero();
+    double radius_m = 0.0;
+    bool valid = false;
+  };
+  const PointsDisc& DiscOf(int i);
   // Stored margins are capped (a smaller margin is always safe), which bounds
   // how far from a grid change a watch can be affected.
   double MarginCap() const { return 2.0 * catalog_.options().exact_slack_m; }
   // Looks up point p (at q in the watch's submap) again and stores the result
-  // in 'entry', keyed against the watch's sort anchor.
-  void Reevaluate(int i, const Watch& watch, const AnswerMap& answers, const Eigen::Vector2d& p,
+  // in 'entry', keyed against the watch's key anchor.
+  void Reevaluate(int i, Watch& watch, const AnswerMap& answers, const Eigen::Vector2d& p,
                   const Eigen::Vector2d& q, Entry* entry);
   // After the watch's submap changed its answers inside 'region' (its frame):
   // re-checks every point whose recorded margin reaches into the region.
   void ReviewNearChange(int i, Watch* watch, const geometry::Box2d& region);
   void EnsureSize(int num_submaps);
-  // Recomputes the sort keys for the current relative pose (no lookups).
+  // Recomputes the keys for the current relative pose (no lookups).
   void Rekey(int i, Watch* watch);
   Watch* FindWatch(int i, int j);
   // After a grid change of 'change.id': keeps the entries of its surviving
@@ -131,7 +138,8 @@ class ExactStrategy : public UpdateStrategy {
   static constexpr int32_t kNoWitness = -1;
   static constexpr int32_t kLost = -2;
   std::vector<std::vector<int32_t>> witness_;
-  std::vector<uint32_t> lost_;  // points (of the submap being updated) without a witness
+  std::vector<PointsDisc> discs_;  // by submap
+  std::vector<uint32_t> lost_;     // points (of the submap being updated) without a witness
   // Distinct points / submaps touched in the current update.
   std::vector<std::vector<uint32_t>> point_stamp_;
   std::vector<uint32_t> submap_stamp_;
