@@ -59,6 +59,31 @@ stale_runs() {
   done
 }
 
+# b77b701: exact follows one witness per point that is not a frontier. It answers as before
+# (always as full) but queries fewer points in another time, so a replay or frontier-bench run
+# older than it reports the earlier exact.
+FRONTIER_EXACT_COMMIT=b77b701
+stale_frontier_runs() {
+  local since name f
+  since=$(git log -1 --format=%ct "$FRONTIER_EXACT_COMMIT" 2>/dev/null) || return 0
+  for name in "$@"; do
+    f=$OUT/$name/summary.json
+    [[ -f $f ]] || continue
+    if (($(stat -c %Y "$f") < since)); then printf '`%s` ' "$name"; fi
+  done
+  return 0
+}
+
+# stale_note NAME...: a paragraph naming the frontier runs made before FRONTIER_EXACT_COMMIT.
+stale_note() {
+  local stale
+  stale=$(stale_frontier_runs "$@")
+  [[ -z $stale ]] && return 0
+  echo "Made with a build older than commit $FRONTIER_EXACT_COMMIT (\`exact\` with witnesses), so"
+  echo "their \`exact\` rows show the earlier \`exact\`: $stale"
+  echo
+}
+
 tables() {
   local kind=$1; shift
   local dirs
@@ -153,6 +178,7 @@ write_document() {
     echo "CARMEN log; the other Radish logs are already corrected, so they are replayed with injected"
     echo "odometry drift (\`--odom-noise 1 --seed 1\`) and scored against their own poses."
     echo
+    stale_note "${REPLAY[@]}"
     tables replay "${REPLAY[@]}"
     compare_figures replay "${REPLAY[@]}"
     if [[ -f $OUT/$first_run/summary.json ]]; then
@@ -194,6 +220,7 @@ write_document() {
     echo
     echo "\`exact\`, \`dfd\` and \`full\` do not depend on ε; they are kept in the table as references."
     echo
+    stale_note "${EPS[@]}"
     tables bench "${EPS[@]}"
     sweep_figures epsilon "${EPS[@]}"
     echo "## (d) Per-round frontier cost against world size"
@@ -203,11 +230,13 @@ write_document() {
     echo "\`full\` as the truth (accuracy columns); its cost grows fastest (309 of the 453 s at"
     echo "100 m), so larger worlds run with \`--no-reference\` and measure the strategies alone."
     echo
+    stale_note "${SIZE[@]}"
     tables bench "${SIZE[@]}"
     sweep_figures size "${SIZE[@]}"
     if [[ ${#BENCH[@]} -gt 0 ]]; then
       echo "## Museum-scale synthetic stream (the paper's museum scene)"
       echo
+      stale_note "${BENCH[@]}"
       tables bench "${BENCH[@]}"
     fi
     cat docs/results_paper.md
