@@ -25,6 +25,8 @@ void Validate(const GoalManagerOptions& o) {
   CheckAtLeast(g, "back_up_speed_mps", o.back_up_speed_mps, 0.0);
   CheckAtLeast(g, "back_up_timeout_s", o.back_up_timeout_s, 0.0);
   CheckAtLeast(g, "back_up_look_behind_m", o.back_up_look_behind_m, 0.0);
+  CheckAtLeast(g, "back_up_trail_m", o.back_up_trail_m, 0.0);
+  CheckAtLeast(g, "back_up_trail_tolerance_m", o.back_up_trail_tolerance_m, 0.0);
   CheckAtLeast(g, "close_stuck_passage_radius_m", o.close_stuck_passage_radius_m, 0.0);
   CheckAtLeast(g, "goal_frontier_radius_m", o.goal_frontier_radius_m, 0.0);
   CheckAtLeast(g, "goal_switch_margin", o.goal_switch_margin, 0.0);
@@ -420,7 +422,49 @@ bool GoalManager::BlockedBehind(const geometry::Rigid2d& pose) const {
   // closer by more than half the look-behind than any is now: where the map
   // has the disc on a wall already (the map's error: the robot stands
   // there), backing along it makes nothing worse.
-  return behind_m < radius_m && behind_m < now_m - 0.5 * look_m;
+  return (behind_m < radius_m && behind_m < now_m - 0.5 * look_m) || OffTrail(pose);
+}
+
+namespace {
+
+double DistanceToSegment(const Eigen::Vector2d& p, const Eigen::Vector2d& a,
+                         const Eigen::Vector2d& b) {
+  const Eigen::Vector2d ab = b - a;
+  const double length_sq = ab.squaredNorm();
+  const double t = length_sq > 0.0 ? std::clamp((p - a).dot(ab) / length_sq, 0.0, 1.0) : 0.0;
+  return (a + t * ab - p).norm();
+}
+
+}  // namespace
+
+bool GoalManager::OffTrail(const geometry::Rigid2d& pose) const {
+  const double look_m = options_.back_up_look_behind_m;
+  if (look_m <= 0.0 || trail_.empty()) return false;
+  const Eigen::Vector2d back(-std::cos(pose.theta()), -std::sin(pose.theta()));
+  // Centres every 2 cm along the segment, its far end included.
+  const int steps = static_cast<int>(std::ceil(look_m / 0.02));
+  for (int k = 1; k <= steps; ++k) {
+    const Eigen::Vector2d c = pose.translation() + (look_m * k / steps) * back;
+    double nearest_m = (c - trail_.front()).norm();
+    for (size_t i = 1; i < trail_.size(); ++i) {
+      nearest_m = std::min(nearest_m, DistanceToSegment(c, trail_[i - 1], trail_[i]));
+    }
+    if (nearest_m > options_.back_up_trail_tolerance_m) return true;
+  }
+  return false;
+}
+
+void GoalManager::RecordTrail(const Eigen::Vector2d& position) {
+  if (options_.back_up_trail_m <= 0.0) return;
+  // 2 cm steps: turning on the spot adds nothing.
+  if (!trail_.empty() && (position - trail_.back()).norm() < 0.02) return;
+  if (!trail_.empty()) trail_length_m_ += (position - trail_.back()).norm();
+  trail_.push_back(position);
+  while (trail_.size() > 2 &&
+         trail_length_m_ - (trail_[1] - trail_[0]).norm() >= options_.back_up_trail_m) {
+    trail_length_m_ -= (trail_[1] - trail_[0]).norm();
+    trail_.pop_front();
+  }
 }
 
 void GoalManager::EndStuckGoal(const ExploreInput& in) {
@@ -435,6 +479,7 @@ void GoalManager::EndStuckGoal(const ExploreInput& in) {
 
 void GoalManager::Drive(const ExploreInput& in, ExploreStatus& status) {
   const Eigen::Vector2d here = in.robot_pose.translation();
+  if (!backing_up_since_) RecordTrail(here);
   if (backing_up_since_) {
     const auto [since_s, from] = *backing_up_since_;
     const bool blocked = BlockedBehind(in.robot_pose);

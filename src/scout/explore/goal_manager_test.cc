@@ -211,6 +211,53 @@ TEST(GoalManagerTest, BackingUpStopsAtAWallTheMapShowsBehind) {
   EXPECT_EQ(gm.counters().back_ups_blocked, 0);
 }
 
+// Backing up may leave the path the robot drove by at most the trail
+// tolerance: the map behind it (which the lidar does not see) may be wrong.
+TEST(GoalManagerTest, BackingUpStaysNearThePathDriven) {
+  Room room;
+  const Eigen::Vector2d stuck_at = room.b.At(20, 20);
+  // Returns how far the robot backs up after getting stuck at 'stuck_at',
+  // having driven there from 'from' (it faces +x, the frontier, either way).
+  const auto backed_m = [&](const GoalManagerOptions& o, const Eigen::Vector2d& from,
+                            int* blocked) {
+    GoalManager gm = MakeManager(o);
+    gm.Start();
+    double t = 0.0;
+    ExploreStatus s = gm.Update(room.Input(t, from, true));
+    EXPECT_EQ(s.state, ExploreState::kDriving);
+    for (double f = 0.0; f <= 1.0; f += 0.05) {
+      s = gm.Update(room.Input(t += 0.1, from + f * (stuck_at - from), false));
+    }
+    for (int k = 0; k < 40 && gm.counters().recoveries == 0; ++k) {
+      s = gm.Update(room.Input(t += 0.1, stuck_at, false));
+    }
+    EXPECT_EQ(gm.counters().recoveries, 1);
+    Eigen::Vector2d robot = stuck_at;
+    while (s.command.linear_mps < 0.0 && t < 100.0) {
+      robot.x() -= 0.01;  // the command moves it 1 cm per update
+      s = gm.Update(room.Input(t += 0.1, robot, false));
+    }
+    *blocked = gm.counters().back_ups_blocked;
+    return (stuck_at - robot).norm();
+  };
+  GoalManagerOptions o;  // stuck recovery on
+  o.back_up_trail_m = 3.0;
+  int blocked = -1;
+  // Came from behind: it backs up the whole back-up distance along its path.
+  EXPECT_NEAR(backed_m(o, room.b.At(8, 20), &blocked), o.back_up_distance_m, 0.015);
+  EXPECT_EQ(blocked, 0);
+  // Turned round where it stands: it stops before its centre would leave the
+  // path by the tolerance (the look-behind included).
+  const double off_path_m = backed_m(o, room.b.At(32, 20), &blocked);
+  EXPECT_LE(off_path_m, o.back_up_trail_tolerance_m - o.back_up_look_behind_m + 0.015);
+  EXPECT_GT(off_path_m, 0.0);
+  EXPECT_EQ(blocked, 1);
+  // With the trail off, the free map alone lets it back the whole distance.
+  o.back_up_trail_m = 0.0;
+  EXPECT_NEAR(backed_m(o, room.b.At(32, 20), &blocked), o.back_up_distance_m, 0.015);
+  EXPECT_EQ(blocked, 0);
+}
+
 TEST(GoalManagerTest, FailedGoalMovesWithItsSubmapAndIsRetriedAfterTheMapChanges) {
   Room room;
   GoalManager gm = MakeManager();

@@ -23,6 +23,8 @@ void ReadGoals(YamlSection s, explore::GoalManagerOptions* o) {
   s.ReadNonNegative("back_up_speed_mps", &o->back_up_speed_mps);
   s.ReadNonNegative("back_up_timeout_s", &o->back_up_timeout_s);
   s.ReadNonNegative("back_up_look_behind_m", &o->back_up_look_behind_m);
+  s.ReadNonNegative("back_up_trail_m", &o->back_up_trail_m);
+  s.ReadNonNegative("back_up_trail_tolerance_m", &o->back_up_trail_tolerance_m);
   s.ReadNonNegative("close_stuck_passage_radius_m", &o->close_stuck_passage_radius_m);
   s.ReadNonNegative("goal_frontier_radius_m", &o->goal_frontier_radius_m);
   s.ReadNonNegative("goal_switch_margin", &o->goal_switch_margin);
