@@ -57,7 +57,6 @@ void ExactStrategy::ResolveLost(int i) {
     is_frontier_[i][k] = 1;
     for (Watch& w : watches_[i]) AddEntry(i, k, &w, catalog_.submap(w.j).answers, slack);
   }
-  // Lookups above found no witness that stops objecting (answers are current).
 }
 
 const ExactStrategy::PointsDisc& ExactStrategy::DiscOf(int i) {
@@ -123,7 +122,7 @@ void ExactStrategy::Anchor(int i, Watch* w) {
   }
 }
 
-bool ExactStrategy::AddEntry(int i, uint32_t k, Watch* w, const AnswerMap& answers,
+void ExactStrategy::AddEntry(int i, uint32_t k, Watch* w, const AnswerMap& answers,
                              double slack_m) {
   const Eigen::Vector2d& p = catalog_.submap(i).frontier.points_m[k];
   const Eigen::Vector2d q = catalog_.PointInSubmap(i, p, w->j);
@@ -133,7 +132,7 @@ bool ExactStrategy::AddEntry(int i, uint32_t k, Watch* w, const AnswerMap& answe
   const double margin = answers.Margin(q) - kSafety_m;
   // Not stored: it keeps its answer while no point moves by 'slack' from the
   // coverage anchor (checked per pair).
-  if (!objects && margin >= slack_m + (q - w->coverage_anchor * p).norm()) return false;
+  if (!objects && margin >= slack_m + (q - w->coverage_anchor * p).norm()) return;
   Entry e;
   e.ref_x_m = static_cast<float>(q.x());
   e.ref_y_m = static_cast<float>(q.y());
@@ -142,9 +141,7 @@ bool ExactStrategy::AddEntry(int i, uint32_t k, Watch* w, const AnswerMap& answe
   e.key_m = static_cast<float>(stored - (RefOf(e) - w->key_anchor * p).norm());
   w->min_key_m = std::min(w->min_key_m, e.key_m);
   e.point = k;
-  e.objects = objects;
   w->entries.push_back(e);
-  return true;
 }
 
 void ExactStrategy::Reevaluate(int i, Watch& w, const AnswerMap& answers, const Eigen::Vector2d& p,
@@ -153,7 +150,6 @@ void ExactStrategy::Reevaluate(int i, Watch& w, const AnswerMap& answers, const 
   const bool objects = answers.Objects(q);
   Observe(i, e->point, w.j, objects);
   const double margin = std::min(answers.Margin(q) - kSafety_m, MarginCap());
-  e->objects = objects;
   e->ref_x_m = static_cast<float>(q.x());
   e->ref_y_m = static_cast<float>(q.y());
   e->ref_margin_m = static_cast<float>(margin);

@@ -51,13 +51,14 @@ class ExactStrategy : public UpdateStrategy {
   int64_t num_entries() const;
 
  private:
+  // j's answer at q_ref is not kept: it stays until the margin is left, and
+  // what it decides is in witness_ (objecting made j the point's witness).
   struct Entry {
     float key_m;         // lower bound of the margin relative to the key anchor
     float ref_margin_m;  // margin of j at q_ref
     float ref_x_m;       // q_ref, in j's frame
     float ref_y_m;
     uint32_t point;  // index of the point in submap i
-    bool objects;    // j's answer at q_ref
   };
   struct Watch {
     int j = -1;
@@ -81,8 +82,7 @@ class ExactStrategy : public UpdateStrategy {
   void Refresh(int i, Watch* watch);
   // Looks up point k of i in the watch's submap and stores an entry unless the
   // slack covers it (objecting answers are always stored).
-  // Returns true if it stored one.
-  bool AddEntry(int i, uint32_t k, Watch* watch, const AnswerMap& answers, double slack_m);
+  void AddEntry(int i, uint32_t k, Watch* watch, const AnswerMap& answers, double slack_m);
   // Whether the watch on j must track point k of i: k is a frontier or j is
   // its witness.
   bool Tracks(int i, uint32_t k, int j) const {
