@@ -355,15 +355,20 @@ UpdateCost ExactStrategy::OnSubmapChanged(const SubmapChange& change) {
       ResolveLost(i);
     }
     // Submaps whose points j's (grown) grid reaches for the first time.
+    // Marks the submaps already watching j, so each candidate is checked in O(1).
     const geometry::Box2d& box = catalog_.submap(j).global_box;
+    watched_.resize(catalog_.size(), 0);
+    const size_t existing = watchers_[j].size();
+    for (const int i : watchers_[j]) watched_[i] = 1;
     for (const int i : catalog_.index().Intersecting(box)) {
-      if (i == j || catalog_.submap(i).frontier.points_m.empty() || FindWatch(i, j) != nullptr ||
+      if (i == j || watched_[i] || catalog_.submap(i).frontier.points_m.empty() ||
           !catalog_.GlobalPointsBox(i).Intersects(box)) {
         continue;
       }
       AddWatch(i, j);
       ResolveLost(i);
     }
+    for (size_t k = 0; k < existing; ++k) watched_[watchers_[j][k]] = 0;
   }
   return EndUpdate(stopwatch.ElapsedUs());
 }

@@ -132,7 +132,7 @@ class ExactStrategy : public UpdateStrategy {
 
   std::vector<std::vector<Watch>> watches_;  // by submap i (whose points are watched)
   std::vector<std::vector<int>> watchers_;   // by submap j: every i with a watch on j
-  std::vector<uint8_t> watched_;             // scratch of UpdateWatchesOf, all 0 between calls
+  std::vector<uint8_t> watched_;  // scratch of UpdateWatchesOf and OnSubmapChanged, 0 between calls
   // Per point: the submap whose watch holds an objecting entry for it,
   // kNoWitness for a global frontier, kLost while queued in lost_.
   static constexpr int32_t kNoWitness = -1;
