@@ -60,7 +60,7 @@ stale_runs() {
 }
 
 # b77b701: exact follows one witness per point that is not a frontier. It answers as before
-# (always as full) but queries fewer points in another time, so a replay or frontier-bench run
+# (always as full) but queries fewer points, with different times, so a replay or frontier-bench run
 # older than it reports the earlier exact.
 FRONTIER_EXACT_COMMIT=b77b701
 stale_frontier_runs() {

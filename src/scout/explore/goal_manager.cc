@@ -427,6 +427,10 @@ bool GoalManager::BlockedBehind(const geometry::Rigid2d& pose) const {
 
 namespace {
 
+// Spacing of the trail's points and of the centres checked against it: finer
+// than the 0.3 m tolerance by far; turning on the spot adds no point.
+constexpr double kTrailStep_m = 0.02;
+
 double DistanceToSegment(const Eigen::Vector2d& p, const Eigen::Vector2d& a,
                          const Eigen::Vector2d& b) {
   const Eigen::Vector2d ab = b - a;
@@ -441,8 +445,8 @@ bool GoalManager::OffTrail(const geometry::Rigid2d& pose) const {
   const double look_m = options_.back_up_look_behind_m;
   if (look_m <= 0.0 || trail_.empty()) return false;
   const Eigen::Vector2d back(-std::cos(pose.theta()), -std::sin(pose.theta()));
-  // Centres every 2 cm along the segment, its far end included.
-  const int steps = static_cast<int>(std::ceil(look_m / 0.02));
+  // Centres every trail step along the segment, its far end included.
+  const int steps = static_cast<int>(std::ceil(look_m / kTrailStep_m));
   for (int k = 1; k <= steps; ++k) {
     const Eigen::Vector2d c = pose.translation() + (look_m * k / steps) * back;
     double nearest_m = (c - trail_.front()).norm();
@@ -456,8 +460,7 @@ bool GoalManager::OffTrail(const geometry::Rigid2d& pose) const {
 
 void GoalManager::RecordTrail(const Eigen::Vector2d& position) {
   if (options_.back_up_trail_m <= 0.0) return;
-  // 2 cm steps: turning on the spot adds nothing.
-  if (!trail_.empty() && (position - trail_.back()).norm() < 0.02) return;
+  if (!trail_.empty() && (position - trail_.back()).norm() < kTrailStep_m) return;
   if (!trail_.empty()) trail_length_m_ += (position - trail_.back()).norm();
   trail_.push_back(position);
   while (trail_.size() > 2 &&
@@ -479,7 +482,6 @@ void GoalManager::EndStuckGoal(const ExploreInput& in) {
 
 void GoalManager::Drive(const ExploreInput& in, ExploreStatus& status) {
   const Eigen::Vector2d here = in.robot_pose.translation();
-  if (!backing_up_since_) RecordTrail(here);
   if (backing_up_since_) {
     const auto [since_s, from] = *backing_up_since_;
     const bool blocked = BlockedBehind(in.robot_pose);
@@ -500,6 +502,7 @@ void GoalManager::Drive(const ExploreInput& in, ExploreStatus& status) {
     status.command.linear_mps = -options_.back_up_speed_mps;
     return;
   }
+  RecordTrail(here);  // backing up adds nothing: back-ups in a row do not add up
   if (map_dirty_ && in.time_s - last_replan_s_ >= options_.replan_interval_s) {
     Replan(in);
     if (state_ != ExploreState::kDriving && state_ != ExploreState::kReturning) return;

@@ -72,7 +72,8 @@ struct GoalManagerOptions {
   // the next back_up_look_behind_m would sweep, closer than any mapped
   // obstacle is now (a disc the map already has on a wall may back along
   // it). Only as good as the map: office seed 3's nearest-frontier run still
-  // backs into a wall its map placed 0.2 m too far (one collision). 0: blind.
+  // backs into a wall its map placed 0.2 m too far (one collision; see
+  // back_up_trail_m). 0: blind, which also turns the trail check off.
   double back_up_look_behind_m = 0.10;
   // Backing up also stops before the next back_up_look_behind_m would take
   // the disc's centre farther than back_up_trail_tolerance_m from the path
@@ -162,9 +163,9 @@ struct ExploreCounters {
   int escapes = 0;             // searches that started by leaving the band or a pocket
   int recoveries = 0;          // back-ups after the robot got stuck (closing its passage)
   int stuck_reselections = 0;  // ... after which the goal was selected afresh, not failed
-  int back_ups_blocked = 0;    // ... that stopped early at a mapped obstacle behind
-  int guard_stops = 0;         // the collision guard stopped a forward command
-  int guard_steers = 0;        // control cycles it steered another arc instead
+  int back_ups_blocked = 0;  // ... that stopped early (a mapped obstacle behind, or off the trail)
+  int guard_stops = 0;       // the collision guard stopped a forward command
+  int guard_steers = 0;      // control cycles it steered another arc instead
 };
 
 struct ExploreStatus {
