@@ -25,10 +25,26 @@ World MakeWallWorld() {
   return world;
 }
 
-LidarOptions NoiselessOptions() {
+// One beam per degree, so beam k looks k - 90 degrees off the heading.
+LidarOptions OneDegreeOptions() {
   LidarOptions options;
+  options.beams = 181;
+  return options;
+}
+
+LidarOptions NoiselessOptions() {
+  LidarOptions options = OneDegreeOptions();
   options.range_noise_stddev_m = 0.0;
   return options;
+}
+
+TEST(Lidar, DefaultBeamsAreHalfADegreeApartOverTheFieldOfView) {
+  std::mt19937_64 rng(1);
+  const sensor::LaserScan scan =
+      Lidar().Scan(MakeWallWorld(), geometry::Rigid2d(1.0, 2.5, 0.0), 0.0, rng);
+  ASSERT_EQ(scan.ranges.size(), 361u);
+  EXPECT_NEAR(scan.angle_min_rad, -std::numbers::pi / 2.0, 1e-6);
+  EXPECT_NEAR(scan.angle_increment_rad, std::numbers::pi / 360.0, 1e-6);
 }
 
 TEST(Lidar, RangeToWallIsExact) {
@@ -86,7 +102,7 @@ TEST(Lidar, HeadingRotatesBeams) {
 
 TEST(Lidar, NoiseHasConfiguredSpread) {
   const World world = MakeWallWorld();
-  LidarOptions options;
+  LidarOptions options = OneDegreeOptions();
   options.range_noise_stddev_m = 0.02;
   const Lidar lidar(options);
   std::mt19937_64 rng(5);
@@ -141,12 +157,12 @@ TEST(Lidar, DropoutRateMatchesProbability) {
 
 TEST(Lidar, DropoutsLeaveTheOtherBeamsUnchanged) {
   const World world = MakeWallWorld();
-  LidarOptions with_dropouts;
+  LidarOptions with_dropouts = OneDegreeOptions();
   with_dropouts.dropout_probability = 0.3;
   std::mt19937_64 a(4), b(4);
   const geometry::Rigid2d pose(1.0, 2.5, 0.2);
   const sensor::LaserScan dropped = Lidar(with_dropouts).Scan(world, pose, 0.0, a);
-  const sensor::LaserScan full = Lidar(LidarOptions{}).Scan(world, pose, 0.0, b);
+  const sensor::LaserScan full = Lidar(OneDegreeOptions()).Scan(world, pose, 0.0, b);
   int kept = 0;
   for (size_t k = 0; k < full.ranges.size(); ++k) {
     if (std::isnan(dropped.ranges[k])) continue;

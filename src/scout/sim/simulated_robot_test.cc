@@ -60,7 +60,7 @@ TEST(SimulatedRobot, SensorRatesAndTimestamps) {
   ASSERT_EQ(r.odometry.size(), 51u);
   for (size_t k = 0; k < r.scans.size(); ++k) {
     EXPECT_NEAR(r.scans[k].time_s, 0.1 * k, 1e-9);
-    EXPECT_EQ(r.scans[k].ranges.size(), 181u);
+    EXPECT_EQ(r.scans[k].ranges.size(), 361u);
   }
   for (size_t k = 0; k < r.odometry.size(); ++k) EXPECT_NEAR(r.odometry[k].time_s, 0.02 * k, 1e-9);
   EXPECT_EQ(robot.OdometryReading().time_s, r.odometry.back().time_s);
@@ -92,7 +92,7 @@ TEST(SimulatedRobot, ScansSeeTheTrueWorldFromTheTruePose) {
   ASSERT_TRUE(scan.has_value());
   EXPECT_NEAR(scan->time_s, 0.5, 1e-9);
   // The middle beam looks straight at the wall x = 4.
-  EXPECT_NEAR(scan->ranges[90], 4.0 - robot.true_pose().x(), 1e-5);
+  EXPECT_NEAR(scan->ranges[scan->ranges.size() / 2], 4.0 - robot.true_pose().x(), 1e-5);
   EXPECT_FALSE(robot.MaybeScan().has_value());
 }
 

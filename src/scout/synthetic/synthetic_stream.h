@@ -35,7 +35,9 @@ struct SyntheticStreamOptions {
   double angular_speed_radps = 0.5;
   // A pose-graph solve (an Optimized event) after every this many scans.
   int optimize_every_n_scans = 90;
-  sim::LidarOptions lidar;
+  // 1 degree beams: the stream's SLAM is synthetic (its submaps' poses come
+  // from the correction model), so only the grids' look depends on them.
+  sim::LidarOptions lidar{.beams = 181};
   sensor::RangeFilterOptions range_filter;
   // Hit 0.55 / miss 0.49 (ALGORITHMS §7).
   grid::RangeDataInserterOptions insertion;
