@@ -33,8 +33,9 @@ not_run() {
 # no_progress rule (the robot's own map instead of the true coverage); then how runs are
 # scored: where an issued goal lies in the true world (the unreachable count) and the map
 # placed by the rigid fit of the trajectory (coverage); 1d008ff: an issued goal placed in
-# the true world through the submap that mapped it (the unreachable count).
-EXPLORE_BEHAVIOUR_COMMIT=1d008ff
+# the true world through the submap that mapped it (the unreachable count); c287408: the
+# simulated lidar's beams 0.5 degree apart instead of 1.
+EXPLORE_BEHAVIOUR_COMMIT=c287408
 # d725b7b (a goal fails on its second stuck recovery, not its first) and 8a6e5c2 (backing
 # up stops at a mapped obstacle behind) change only runs with a stuck recovery; 137c2f9
 # (failed goals next to reachable frontier tried once more before finishing) only runs
