@@ -180,17 +180,17 @@ double CorridorLagM(int beams) {
 }
 
 // Local SLAM with odometry priors drifts backward along a featureless
-// corridor even with perfect odometry: a small pull of each match toward the
-// mapped part accumulates, as every prediction starts from the last match.
-// Denser beams pull less (0.18 m at 1 degree, 0.12 m at 0.5 degree, 0.03 m
-// at 0.25 degree): the simulated lidar's beams are 0.5 degree apart.
+// corridor even with perfect odometry: every prediction starts from the last
+// match, so a small bias of the matches accumulates. Denser beams drift less
+// (measured: 0.18 m at 1 degree, 0.12 m at 0.5 degree, 0.03 m at 0.25
+// degree); the simulated lidar's beams are 0.5 degree apart.
 TEST(LocalTrajectoryBuilderTest, LagsLessAlongACorridorWithDenserBeams) {
   const double lag_1_deg_m = CorridorLagM(181);
   const double lag_half_deg_m = CorridorLagM(361);
   std::cout << "corridor lag after 16 m: 1 degree " << lag_1_deg_m << " m, 0.5 degree "
             << lag_half_deg_m << " m\n";
-  EXPECT_GT(lag_1_deg_m, 0.1);
-  EXPECT_LT(std::abs(lag_half_deg_m), 1.0);
+  EXPECT_LT(std::abs(lag_half_deg_m), 0.15);
+  EXPECT_LT(std::abs(lag_half_deg_m), std::abs(lag_1_deg_m));
 }
 
 TEST(LocalTrajectoryBuilderTest, ResultCarriesSubmapsAndSkipsUnusableScans) {
