@@ -21,10 +21,10 @@ struct LidarOptions {
   // Number of beams spread evenly over the field of view (both ends included
   // below 360 degrees): 0.5 degree apart, still coarser than Hokuyo scanners
   // (0.25-0.36 degrees). At 1 degree, local SLAM lagged more along corridors
-  // (local_trajectory_builder_test: 0.18 against 0.12 m per 16 m) and the
-  // explored office came out up to 1.4 % short along them: ATE 0.135, 0.079,
-  // 0.051, 0.090, 0.145 m on seeds 1-5, against 0.038, 0.058, 0.048, 0.056,
-  // 0.050 m at 0.5 degree, for 4 % more wall time.
+  // (local_trajectory_builder_test: 0.18 against 0.12 m per 16 m), and the
+  // explored office's trajectory came out up to 1.4 % too small along one
+  // axis: ATE 0.135, 0.079, 0.051, 0.090, 0.145 m on seeds 1-5, against 0.038,
+  // 0.058, 0.048, 0.056, 0.050 m at 0.5 degree, for 4 % more wall time.
   int beams = 361;
   // Standard deviation of the Gaussian error added to every return.
   double range_noise_stddev_m = 0.01;
