@@ -137,4 +137,40 @@ TEST_F(ExploreCli, ExploresASmallMapAndWritesEveryOutput) {
   EXPECT_EQ(header, "sim_time_s,path_length_m,coverage");
 }
 
+TEST_F(ExploreCli, RecordsItsSensorStreamForReplayAgainstTheTruePoses) {
+  const fs::path out = dir_ / "out";
+  const std::string rooms = " --world " + (dir_ / "rooms.yaml").string();
+  Result r =
+      RunScout("explore --quiet --record-log --max-sim-time 40" + rooms + " --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  ASSERT_TRUE(fs::exists(out / "sensor.log"));
+  // The explore loop's local SLAM settings, so the replay sees what the loop saw.
+  scout::WriteTextFileAtomically(dir_ / "explore_slam.yaml",
+                                 "slam:\n  local:\n    use_online_correlative_scan_matching: "
+                                 "false\n    ceres_scan_matcher:\n      translation_weight: 5\n"
+                                 "      rotation_weight: 10\n");
+  const std::string log = (out / "sensor.log").string();
+  r = RunScout("replay " + log + " --reference " + log + " --synchronous --strategies exact" +
+               " --config " + (dir_ / "explore_slam.yaml").string() + " --quiet --out " +
+               (dir_ / "replay").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::ifstream explore_in(out / "summary.json");
+  const nlohmann::json explored = nlohmann::json::parse(explore_in);
+  std::ifstream replay_in(dir_ / "replay" / "summary.json");
+  const nlohmann::json replayed = nlohmann::json::parse(replay_in);
+  // Every scan the simulator made is in the log, every node found its true pose.
+  EXPECT_EQ(replayed["scans"], explored["slam"]["scans"]);
+  EXPECT_EQ(replayed["reference"]["matched_scans"], replayed["slam"]["nodes"]);
+  EXPECT_LT(replayed["reference"]["ate_rmse_m"].get<double>(), 0.1);
+
+  // A lidar whose beams a FLASER line cannot describe is refused before anything is written.
+  scout::WriteTextFileAtomically(dir_ / "wide.yaml",
+                                 "robot:\n  lidar:\n    fov_deg: 360\n    beams: 360\n");
+  r = RunScout("explore --quiet --record-log --config " + (dir_ / "wide.yaml").string() + rooms +
+               " --out " + (dir_ / "wide").string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("--record-log"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(dir_ / "wide"));
+}
+
 }  // namespace

@@ -8,6 +8,7 @@
 #include <iostream>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 
 #include "apps/scout/command_util.h"
@@ -15,12 +16,14 @@
 #include "scout/common/error.h"
 #include "scout/exploration/exploration_loop.h"
 #include "scout/frontier/stopwatch.h"
+#include "scout/io/carmen_log_writer.h"
 #include "scout/io/config.h"
 #include "scout/io/frontier_report.h"
 #include "scout/io/map_picture.h"
 #include "scout/io/output_directory.h"
 #include "scout/io/trajectory_metrics.h"
 #include "scout/io/tum_trajectory.h"
+#include "scout/sim/lidar.h"
 #include "scout/sim/make_world.h"
 
 namespace scout::apps {
@@ -212,6 +215,9 @@ CLI::App* AddExploreCommand(CLI::App& app, ExploreArgs* args) {
                   "stop after this much simulated time, seconds (default: explore.max_sim_time_s)");
   cmd->add_option("--start", args->start, "start position X,Y in metres (default: the world's)");
   cmd->add_flag("--quiet", args->quiet, "print only the final summary");
+  cmd->add_flag("--record-log", args->record_log,
+                "also write sensor.log: every scan with its true and odometry pose as a CARMEN "
+                "log, to re-run SLAM on it with `scout replay sensor.log --reference sensor.log`");
   return cmd;
 }
 
@@ -224,7 +230,20 @@ int RunExplore(const ExploreArgs& args) {
                               : std::optional<sim::WorldSize>(sim::ParseWorldSize(args.world_size));
   const sim::World world = sim::MakeWorld(args.world, args.seed, world_size);
   exploration::ExplorationLoop loop(world, options, args.seed);
+  std::optional<io::CarmenLogWriter> log;
+  if (args.record_log) {
+    const sim::Lidar lidar(options.robot.lidar);
+    io::CheckFlaserGeometry(lidar.angle_min_rad(), lidar.angle_increment_rad(),
+                            options.robot.lidar.beams, "--record-log");
+  }
   io::OutputDirectory out(args.out_dir);
+  if (args.record_log) {
+    log.emplace(out.Stage("sensor.log"));
+    loop.set_scan_recorder([&log](const sensor::LaserScan& scan, const geometry::Rigid2d& true_pose,
+                                  const geometry::Rigid2d& odometry_pose) {
+      log->AddScan(scan, true_pose, odometry_pose);
+    });
+  }
 
   const bool terminal = !args.quiet && ::isatty(STDERR_FILENO);
   exploration::ExplorationLoop::ProgressCallback progress;
@@ -257,6 +276,7 @@ int RunExplore(const ExploreArgs& args) {
   io::WriteFrontierCsv(loop.frontier_engine(), out.Stage("frontier.csv"));
   WriteCoverageCsv(result.coverage_samples, out.Stage("coverage.csv"));
   WriteTextFileAtomically(out.Stage("summary.json"), summary.dump(2) + "\n");
+  if (log) log->Close();
   out.Commit();
 
   std::cout << std::fixed << std::setprecision(3) << "explore: " << world.name << " seed "
@@ -274,7 +294,8 @@ int RunExplore(const ExploreArgs& args) {
             << result.visited_frontier_left << " reachable near reached goals)\n"
             << "outputs: " << (out.path() / "summary.json").string()
             << ", map.yaml, map.pgm, map.png, trajectory.tum, truth.tum, frontier.csv, "
-               "coverage.csv\n";
+               "coverage.csv"
+            << (log ? ", sensor.log" : "") << "\n";
   return 0;
 }
 

@@ -19,6 +19,7 @@ struct ExploreArgs {
   std::optional<double> max_sim_time_s;
   std::string start;  // "X,Y", empty: the world's own start
   bool quiet = false;
+  bool record_log = false;  // also write sensor.log (CARMEN) for `scout replay`
 };
 
 // Registers `scout explore` on 'app'.
@@ -26,8 +27,8 @@ CLI::App* AddExploreCommand(CLI::App& app, ExploreArgs* args);
 
 // Explores a simulated world in closed loop (simulator, SLAM, frontier, goals)
 // and writes map.yaml/pgm, map.png, trajectory.tum, truth.tum, frontier.csv,
-// coverage.csv and summary.json. Returns the process exit code; throws
-// InputError on bad input before writing anything.
+// coverage.csv and summary.json (and sensor.log with --record-log). Returns the process exit code;
+// throws InputError on bad input before writing anything.
 int RunExplore(const ExploreArgs& args);
 
 }  // namespace scout::apps

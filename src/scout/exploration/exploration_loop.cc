@@ -85,6 +85,7 @@ void ExplorationLoop::FeedSensorsUntimed() {
   // The lidar sits at the robot's centre: its returns are the guard's view.
   latest_returns_ = sensor::ToRangeData(*scan, options_.slam.local.range_filter).returns;
   result_.truth.push_back({scan->time_s, robot_.true_pose()});
+  if (scan_recorder_) scan_recorder_(*scan, robot_.true_pose(), latest_odometry_);
   const bool inserted = builder_->AddScan(*scan);
   builder_->DrainEvents();
   const slam::LocalTrajectoryBuilder& local = builder_->local_trajectory_builder();

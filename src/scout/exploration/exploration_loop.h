@@ -7,6 +7,7 @@
 #include <memory>
 #include <optional>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "scout/exploration/exploration_options.h"
@@ -15,6 +16,7 @@
 #include "scout/frontier/frontier_engine.h"
 #include "scout/grid/incremental_fusion.h"
 #include "scout/grid/occupancy_map.h"
+#include "scout/sensor/laser_scan.h"
 #include "scout/sim/simulated_robot.h"
 #include "scout/sim/world.h"
 #include "scout/slam/map_builder.h"
@@ -127,6 +129,11 @@ inline constexpr double kCoverageThresholds[] = {0.90, 0.95, 0.99};
 class ExplorationLoop {
  public:
   using ProgressCallback = std::function<void(const ExplorationProgress&)>;
+  // Sees every scan as SLAM gets it, with the robot's true pose (world frame)
+  // and its odometry pose at the scan's time: `scout explore --record-log`.
+  using ScanRecorder =
+      std::function<void(const sensor::LaserScan& scan, const geometry::Rigid2d& true_pose,
+                         const geometry::Rigid2d& odometry_pose)>;
 
   // Throws InputError on bad options, a start the robot does not fit at, or
   // no reachable free space.
@@ -136,6 +143,9 @@ class ExplorationLoop {
   // optimisation) and measures the final map. Calls 'progress' about every
   // 'progress_interval_s' of sim time. Call once.
   ExplorationResult Run(const ProgressCallback& progress = {}, double progress_interval_s = 10.0);
+
+  // Call before Run().
+  void set_scan_recorder(ScanRecorder recorder) { scan_recorder_ = std::move(recorder); }
 
   const slam::MapBuilder& map_builder() const { return *builder_; }
   const frontier::FrontierEngine& frontier_engine() const { return engine_; }
@@ -198,6 +208,7 @@ class ExplorationLoop {
   std::vector<Eigen::Vector2d> frontier_;
   std::vector<explore::SubmapPose> submap_poses_;
 
+  ScanRecorder scan_recorder_;
   ExplorationResult result_;
   double best_map_free_m2_ = 0.0;
   double last_gain_s_ = 0.0;

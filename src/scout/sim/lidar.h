@@ -41,6 +41,9 @@ class Lidar {
 
   // Returns the options the lidar was built with.
   const LidarOptions& options() const { return options_; }
+  // Direction of the first beam and the angle between beams (sensor frame).
+  double angle_min_rad() const { return angle_min_rad_; }
+  double angle_increment_rad() const { return angle_increment_rad_; }
 
   // Returns the scan seen from 'pose' (sensor frame -> world frame) in the TRUE
   // world: every beam ends where it enters the first occupied or unknown cell

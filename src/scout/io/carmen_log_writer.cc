@@ -1,0 +1,91 @@
+#include "scout/io/carmen_log_writer.h"
+
+#include <cmath>
+#include <numbers>
+
+#include "scout/common/error.h"
+
+namespace scout::io {
+namespace {
+
+// FLASER stores ranges and poses as text; millimetres and microradians are
+// below any lidar's noise.
+void AppendNumber(std::string* line, double value, int decimals) {
+  if (std::isnan(value)) {
+    *line += " nan";
+  } else if (std::isinf(value)) {
+    *line += value > 0 ? " inf" : " -inf";
+  } else {
+    char text[64];
+    std::snprintf(text, sizeof(text), " %.*f", decimals, value);
+    *line += text;
+  }
+}
+
+}  // namespace
+
+void CheckFlaserGeometry(double angle_min_rad, double angle_increment_rad, int num_beams,
+                         const std::string& what) {
+  // The reader (carmen_log_reader.cc) spreads n beams over pi in n - 1 steps
+  // for odd n and n steps for even n, starting at -pi/2.
+  const int steps = num_beams % 2 == 1 ? num_beams - 1 : num_beams;
+  const double expected_increment = steps > 0 ? std::numbers::pi / steps : 0.0;
+  constexpr double kTolerance_rad = 1e-5;
+  if (num_beams < 2 || std::abs(angle_min_rad + std::numbers::pi / 2) > kTolerance_rad ||
+      std::abs(angle_increment_rad - expected_increment) * steps > kTolerance_rad) {
+    throw InputError(what +
+                     ": a CARMEN FLASER line needs beams over 180 degrees from -90 "
+                     "degrees (an odd count with both ends included); this scan has " +
+                     std::to_string(num_beams) + " beams from " +
+                     std::to_string(angle_min_rad * 180.0 / std::numbers::pi) + " degrees, " +
+                     std::to_string(angle_increment_rad * 180.0 / std::numbers::pi) +
+                     " degrees apart");
+  }
+}
+
+CarmenLogWriter::CarmenLogWriter(const std::filesystem::path& path) : path_(path) {
+  file_ = std::fopen(path.c_str(), "w");
+  if (file_ == nullptr) {
+    throw InputError(path.string() + ": cannot open for writing (expected a writable path)");
+  }
+  std::fputs(
+      "# CARMEN log written by Scout: FLASER lines hold the true pose as x y theta and\n"
+      "# the odometry pose as odom_x odom_y odom_theta; beams without a return are inf.\n",
+      file_);
+}
+
+CarmenLogWriter::~CarmenLogWriter() {
+  if (file_ != nullptr) std::fclose(file_);
+}
+
+void CarmenLogWriter::AddScan(const sensor::LaserScan& scan, const geometry::Rigid2d& pose,
+                              const geometry::Rigid2d& odometry) {
+  if (file_ == nullptr) throw InputError(path_.string() + ": written to after Close()");
+  CheckFlaserGeometry(scan.angle_min_rad, scan.angle_increment_rad,
+                      static_cast<int>(scan.ranges.size()), path_.string());
+  std::string line = "FLASER " + std::to_string(scan.ranges.size());
+  line.reserve(line.size() + 8 * scan.ranges.size() + 160);
+  for (const float r : scan.ranges) AppendNumber(&line, r, 3);
+  for (const double v :
+       {pose.x(), pose.y(), pose.theta(), odometry.x(), odometry.y(), odometry.theta()}) {
+    AppendNumber(&line, v, 6);
+  }
+  AppendNumber(&line, scan.time_s, 6);
+  line += " scout-sim";
+  AppendNumber(&line, scan.time_s, 6);
+  line += '\n';
+  if (std::fputs(line.c_str(), file_) == EOF) {
+    throw InputError(path_.string() + ": write failed (disk full?)");
+  }
+  ++num_scans_;
+}
+
+void CarmenLogWriter::Close() {
+  if (file_ == nullptr) return;
+  const bool ok = std::fflush(file_) == 0 && !std::ferror(file_);
+  const bool closed = std::fclose(file_) == 0;
+  file_ = nullptr;
+  if (!ok || !closed) throw InputError(path_.string() + ": write failed (disk full?)");
+}
+
+}  // namespace scout::io
