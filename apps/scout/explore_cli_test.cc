@@ -134,7 +134,7 @@ TEST_F(ExploreCli, ExploresASmallMapAndWritesEveryOutput) {
   std::ifstream csv(out / "coverage.csv");
   std::string header;
   std::getline(csv, header);
-  EXPECT_EQ(header, "sim_time_s,path_length_m,coverage");
+  EXPECT_EQ(header, "sim_time_s,path_length_m,coverage,map_free_m2");
 }
 
 TEST_F(ExploreCli, RecordsItsSensorStreamForReplayAgainstTheTruePoses) {

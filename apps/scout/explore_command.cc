@@ -175,9 +175,10 @@ nlohmann::json Summary(const ExploreArgs& args, const exploration::ExplorationLo
 void WriteCoverageCsv(const std::vector<exploration::CoverageSample>& samples,
                       const std::filesystem::path& path) {
   std::ostringstream csv;
-  csv << "sim_time_s,path_length_m,coverage\n" << std::setprecision(6);
+  csv << "sim_time_s,path_length_m,coverage,map_free_m2\n" << std::setprecision(6);
   for (const exploration::CoverageSample& s : samples) {
-    csv << s.sim_time_s << "," << s.path_length_m << "," << s.coverage << "\n";
+    csv << s.sim_time_s << "," << s.path_length_m << "," << s.coverage << "," << s.map_free_m2
+        << "\n";
   }
   WriteTextFileAtomically(path, csv.str());
 }

@@ -330,7 +330,8 @@ ExplorationResult ExplorationLoop::Run(const ProgressCallback& progress,
       }
     }
     if (t >= next_sample_s) {
-      result_.coverage_samples.push_back({t, robot_.path_length_m(), result_.coverage});
+      result_.coverage_samples.push_back(
+          {t, robot_.path_length_m(), result_.coverage, result_.map_free_m2});
       next_sample_s += e.coverage_interval_s;
     }
     if (progress && t >= next_progress_s) {
@@ -362,7 +363,8 @@ ExplorationResult ExplorationLoop::Run(const ProgressCallback& progress,
   MaybeUpdateMap(/*force=*/true);
   const double t = robot_.sim_time_s();
   if (result_.coverage_samples.empty() || result_.coverage_samples.back().sim_time_s < t) {
-    result_.coverage_samples.push_back({t, robot_.path_length_m(), result_.coverage});
+    result_.coverage_samples.push_back(
+        {t, robot_.path_length_m(), result_.coverage, result_.map_free_m2});
   }
   result_.sim_time_s = t;
   result_.path_length_m = robot_.path_length_m();

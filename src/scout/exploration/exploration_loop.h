@@ -36,6 +36,8 @@ struct CoverageSample {
   double sim_time_s = 0.0;
   double path_length_m = 0.0;  // true distance driven so far
   double coverage = 0.0;
+  // Free area of the robot's own fused map (what no_progress watches).
+  double map_free_m2 = 0.0;
 };
 
 // A goal the goal manager issued, judged against the true world.
