@@ -34,8 +34,9 @@ void CheckFlaserGeometry(double angle_min_rad, double angle_increment_rad, int n
   if (num_beams < 2 || std::abs(angle_min_rad + std::numbers::pi / 2) > kTolerance_rad ||
       std::abs(angle_increment_rad - expected_increment) * steps > kTolerance_rad) {
     throw InputError(what +
-                     ": a CARMEN FLASER line needs beams over 180 degrees from -90 "
-                     "degrees (an odd count with both ends included); this scan has " +
+                     ": a CARMEN FLASER line needs beams from -90 degrees over 180 degrees "
+                     "(an odd count n with both ends included, or an even count n spaced "
+                     "180/n degrees); this scan has " +
                      std::to_string(num_beams) + " beams from " +
                      std::to_string(angle_min_rad * 180.0 / std::numbers::pi) + " degrees, " +
                      std::to_string(angle_increment_rad * 180.0 / std::numbers::pi) +

@@ -16,8 +16,9 @@
 namespace scout::io {
 
 // Throws InputError unless scans with this geometry fit a FLASER line, whose
-// beams by convention span 180 degrees from -90 degrees, both ends included
-// for an odd beam count ('what' names the scan source in the message).
+// beams by convention start at -90 degrees and span 180 degrees: n - 1 steps
+// for an odd count n (both ends included), n steps for an even count ('what'
+// names the scan source in the message).
 void CheckFlaserGeometry(double angle_min_rad, double angle_increment_rad, int num_beams,
                          const std::string& what);
 
