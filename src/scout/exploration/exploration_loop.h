@@ -4,6 +4,7 @@
 #include <Eigen/Core>
 #include <cstdint>
 #include <functional>
+#include <future>
 #include <memory>
 #include <optional>
 #include <string_view>
@@ -175,8 +176,14 @@ class ExplorationLoop {
   // Rebuilds the fused map and frontier if SLAM changed them and the interval
   // has passed; returns true if it did.
   bool MaybeUpdateMap(bool force);
-  // Coverage and the robot's own mapped area; 'nodes' are SLAM's current ones.
+  // The robot's own mapped area (no_progress watches it) now, and coverage
+  // on another thread; 'nodes' are SLAM's current ones. Coverage is only
+  // measured, never acted on, so the loop does not wait for it: it waits at
+  // the next measurement (CompleteCoverage), and the result is the same.
   void MeasureCoverage(const std::vector<slam::TimedPose>& nodes);
+  // Waits for the coverage measurement in flight, if any, and records it: in
+  // result_ and in the coverage samples taken since it started.
+  void CompleteCoverage();
   void RecordIssuedGoal(const Eigen::Vector2d& goal_map, const Eigen::Vector2d& target_map);
   std::optional<Termination> CheckTermination(const explore::ExploreStatus& status) const;
 
@@ -214,6 +221,15 @@ class ExplorationLoop {
   ExplorationResult result_;
   double best_map_free_m2_ = 0.0;
   double last_gain_s_ = 0.0;
+
+  // The coverage measurement in flight. Declared last: destroyed (joined)
+  // first, while the ground truth it reads still exists.
+  struct PendingCoverage {
+    double sim_time_s = 0.0;
+    size_t first_sample = 0;  // coverage samples from here on show it
+    std::future<double> mapped_free_m2;
+  };
+  std::optional<PendingCoverage> pending_coverage_;
 };
 
 }  // namespace scout::exploration

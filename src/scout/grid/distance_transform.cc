@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "scout/common/parallel.h"
+
 namespace scout::grid {
 namespace {
 
@@ -66,33 +68,44 @@ std::vector<float> SquaredDistanceToNearestSite(const std::vector<uint8_t>& is_s
   // sweeps read memory contiguously (Meijster et al.'s first phase).
   constexpr int32_t kNone = std::numeric_limits<int32_t>::max();
   std::vector<int32_t> along_y(num_cells);
-  for (int y = 0; y < height; ++y) {
-    const size_t row = static_cast<size_t>(y) * width;
-    for (int x = 0; x < width; ++x) {
-      const int32_t above = y > 0 ? along_y[row - width + x] : kNone;
-      along_y[row + x] = is_site[row + x] ? 0 : (above == kNone ? kNone : above + 1);
+  // Columns are independent in pass 1 and rows in pass 2: each thread takes a
+  // block of them, so the result is the serial one. Grids below
+  // kMinCellsPerThread cells per thread stay on the calling thread.
+  constexpr int64_t kMinCellsPerThread = 1 << 16;
+  const auto lines_per_thread = [](int64_t length) {
+    return std::max<int64_t>(1, kMinCellsPerThread / std::max<int64_t>(1, length));
+  };
+  common::ParallelFor(width, lines_per_thread(height), [&](int64_t x0, int64_t x1) {
+    for (int y = 0; y < height; ++y) {
+      const size_t row = static_cast<size_t>(y) * width;
+      for (int64_t x = x0; x < x1; ++x) {
+        const int32_t above = y > 0 ? along_y[row - width + x] : kNone;
+        along_y[row + x] = is_site[row + x] ? 0 : (above == kNone ? kNone : above + 1);
+      }
     }
-  }
-  for (int y = height - 2; y >= 0; --y) {
-    const size_t row = static_cast<size_t>(y) * width;
-    for (int x = 0; x < width; ++x) {
-      const int32_t below = along_y[row + width + x];
-      if (below != kNone && below + 1 < along_y[row + x]) along_y[row + x] = below + 1;
+    for (int y = height - 2; y >= 0; --y) {
+      const size_t row = static_cast<size_t>(y) * width;
+      for (int64_t x = x0; x < x1; ++x) {
+        const int32_t below = along_y[row + width + x];
+        if (below != kNone && below + 1 < along_y[row + x]) along_y[row + x] = below + 1;
+      }
     }
-  }
+  });
   // Pass 2, along each row over the column results: dx^2 + dy^2 minimised.
-  std::vector<double> f(width), d(width), z(width + 1);
-  std::vector<int> v(width);
   std::vector<float> result(num_cells);
-  for (int y = 0; y < height; ++y) {
-    const size_t row = static_cast<size_t>(y) * width;
-    for (int x = 0; x < width; ++x) {
-      const int32_t dy = along_y[row + x];
-      f[x] = dy == kNone ? kInfinity : static_cast<double>(dy) * dy;
+  common::ParallelFor(height, lines_per_thread(width), [&](int64_t y0, int64_t y1) {
+    std::vector<double> f(width), d(width), z(width + 1);
+    std::vector<int> v(width);
+    for (int64_t y = y0; y < y1; ++y) {
+      const size_t row = static_cast<size_t>(y) * width;
+      for (int x = 0; x < width; ++x) {
+        const int32_t dy = along_y[row + x];
+        f[x] = dy == kNone ? kInfinity : static_cast<double>(dy) * dy;
+      }
+      DistanceTransform1d(f, width, &d, &v, &z);
+      for (int x = 0; x < width; ++x) result[row + x] = static_cast<float>(d[x]);
     }
-    DistanceTransform1d(f, width, &d, &v, &z);
-    for (int x = 0; x < width; ++x) result[row + x] = static_cast<float>(d[x]);
-  }
+  });
   return result;
 }
 

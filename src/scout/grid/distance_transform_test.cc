@@ -3,8 +3,10 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <limits>
+#include <random>
 #include <stdexcept>
 
 namespace scout::grid {
@@ -37,6 +39,32 @@ RC_GTEST_PROP(SquaredDistanceToNearestSite, EqualsBruteForceOnRandomMasks, ()) {
   for (auto& m : mask) m = *rc::gen::inRange(0, 100) < percent;
   const std::vector<float> edt = SquaredDistanceToNearestSite(mask, width, height);
   RC_ASSERT(edt == BruteForce(mask, width, height));
+}
+
+// Grids of maps (millions of cells) are split between threads by rows and
+// columns; the result must not depend on where the blocks meet.
+TEST(SquaredDistanceToNearestSite, LargeGridsSplitBetweenThreadsEqualTheNearestSiteByHand) {
+  const int width = 811, height = 597;
+  std::vector<uint8_t> mask(width * height, 0);
+  std::mt19937 random(11);
+  std::vector<std::array<int, 2>> sites;
+  for (int i = 0; i < 25; ++i) {
+    const int x = static_cast<int>(random() % width), y = static_cast<int>(random() % height);
+    mask[y * width + x] = 1;
+    sites.push_back({x, y});
+  }
+  const std::vector<float> edt = SquaredDistanceToNearestSite(mask, width, height);
+  int64_t mismatches = 0;
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      float best = std::numeric_limits<float>::infinity();
+      for (const auto& [sx, sy] : sites) {
+        best = std::min(best, static_cast<float>((x - sx) * (x - sx) + (y - sy) * (y - sy)));
+      }
+      mismatches += edt[y * width + x] != best;
+    }
+  }
+  EXPECT_EQ(mismatches, 0);
 }
 
 TEST(SquaredDistanceToNearestSite, NoSiteGivesInfinity) {

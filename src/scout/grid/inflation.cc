@@ -5,9 +5,13 @@
 #include <stdexcept>
 #include <string>
 
+#include "scout/common/parallel.h"
+
 namespace scout::grid {
 
 namespace {
+
+constexpr int64_t kMinCellsPerThread = 1 << 16;
 
 // Squared radius in cells, as the integer threshold on squared cell distances.
 int64_t SquaredCellThreshold(double radius_m, double resolution_m) {
@@ -19,6 +23,13 @@ int64_t SquaredCellThreshold(double radius_m, double resolution_m) {
   // relative tolerance to include the cells at distance k.
   const double radius_cells = radius_m / resolution_m;
   return static_cast<int64_t>(std::floor(radius_cells * radius_cells * (1.0 + 1e-9) + 1e-9));
+}
+
+// Lines (columns or rows) per thread so that each thread gets at least
+// kMinCellsPerThread cells of length 'line_length': smaller grids (a submap's)
+// are not worth starting a thread for.
+int64_t LinesPerThread(int64_t line_length) {
+  return std::max<int64_t>(1, kMinCellsPerThread / std::max<int64_t>(1, line_length));
 }
 
 }  // namespace
@@ -58,51 +69,56 @@ std::vector<uint8_t> InflationLevels(const std::vector<CellState>& states, const
   // is shared by all radii.
   const int32_t cap = max_reach + 1;
   std::vector<int32_t> along_y(states.size());
-  for (int y = 0; y < height; ++y) {
-    const size_t row = static_cast<size_t>(y) * width;
-    for (int x = 0; x < width; ++x) {
-      const int32_t above = y > 0 ? along_y[row - width + x] : cap;
-      along_y[row + x] =
-          states[row + x] == CellState::kOccupied ? 0 : std::min<int32_t>(above + 1, cap);
+  // Columns are independent in step (1) and rows in step (2): each thread
+  // takes a block of them, so the result is the serial one.
+  common::ParallelFor(width, LinesPerThread(height), [&](int64_t x0, int64_t x1) {
+    for (int y = 0; y < height; ++y) {
+      const size_t row = static_cast<size_t>(y) * width;
+      for (int64_t x = x0; x < x1; ++x) {
+        const int32_t above = y > 0 ? along_y[row - width + x] : cap;
+        along_y[row + x] =
+            states[row + x] == CellState::kOccupied ? 0 : std::min<int32_t>(above + 1, cap);
+      }
     }
-  }
-  for (int y = height - 2; y >= 0; --y) {
-    const size_t row = static_cast<size_t>(y) * width;
-    for (int x = 0; x < width; ++x) {
-      along_y[row + x] = std::min(along_y[row + x], along_y[row + width + x] + 1);
+    for (int y = height - 2; y >= 0; --y) {
+      const size_t row = static_cast<size_t>(y) * width;
+      for (int64_t x = x0; x < x1; ++x) {
+        along_y[row + x] = std::min(along_y[row + x], along_y[row + width + x] + 1);
+      }
     }
-  }
+  });
   std::vector<uint8_t> level(states.size(), 0);
-  std::vector<int32_t> delta(width + 1);
-  std::vector<int> half_width;
   for (size_t k = 0; k < radii_m.size(); ++k) {
     // Half-widths by vertical distance, computed once per radius.
-    half_width.assign(reach[k] + 1, 0);
+    std::vector<int> half_width(reach[k] + 1, 0);
     for (int dy = 0; dy <= reach[k]; ++dy) {
       int h = static_cast<int>(std::floor(std::sqrt(static_cast<double>(threshold[k] - dy * dy))));
       while (static_cast<int64_t>(h + 1) * (h + 1) + dy * dy <= threshold[k]) ++h;
       while (h > 0 && static_cast<int64_t>(h) * h + dy * dy > threshold[k]) --h;
       half_width[dy] = h;
     }
-    for (int y = 0; y < height; ++y) {
-      const size_t row = static_cast<size_t>(y) * width;
-      std::fill(delta.begin(), delta.end(), 0);
-      bool any = false;
-      for (int x = 0; x < width; ++x) {
-        const int32_t dy = along_y[row + x];
-        if (dy > reach[k]) continue;
-        const int h = half_width[dy];
-        ++delta[std::max(0, x - h)];
-        --delta[std::min(width, x + h + 1)];
-        any = true;
+    common::ParallelFor(height, LinesPerThread(width), [&](int64_t y0, int64_t y1) {
+      std::vector<int32_t> delta(width + 1);
+      for (int64_t y = y0; y < y1; ++y) {
+        const size_t row = static_cast<size_t>(y) * width;
+        std::fill(delta.begin(), delta.end(), 0);
+        bool any = false;
+        for (int x = 0; x < width; ++x) {
+          const int32_t dy = along_y[row + x];
+          if (dy > reach[k]) continue;
+          const int h = half_width[dy];
+          ++delta[std::max(0, x - h)];
+          --delta[std::min(width, x + h + 1)];
+          any = true;
+        }
+        if (!any) continue;
+        int32_t covering = 0;
+        for (int x = 0; x < width; ++x) {
+          covering += delta[x];
+          level[row + x] += covering > 0;
+        }
       }
-      if (!any) continue;
-      int32_t covering = 0;
-      for (int x = 0; x < width; ++x) {
-        covering += delta[x];
-        level[row + x] += covering > 0;
-      }
-    }
+    });
   }
   return level;
 }

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+#include <random>
 #include <stdexcept>
 
 namespace scout::grid {
@@ -102,6 +103,39 @@ RC_GTEST_PROP(InflationLevels, CountsTheRadiiEachCellLiesWithin, ()) {
     for (size_t i = 0; i < one.size(); ++i) expected[i] += one[i];
   }
   RC_ASSERT(InflationLevels(states, limits, radii) == expected);
+}
+
+// Grids of maps (millions of cells) are split between threads by rows and
+// columns; the result must not depend on where the blocks meet.
+TEST(InflationLevels, LargeGridsSplitBetweenThreadsEqualTheDirectMarking) {
+  const MapLimits limits(0.05, {0.0, 0.0}, 701, 613);
+  std::vector<CellState> states(limits.num_cells(), CellState::kFree);
+  std::mt19937 random(7);
+  std::vector<CellIndex> occupied;
+  for (int i = 0; i < 3000; ++i) {
+    const CellIndex c{static_cast<int>(random() % 701), static_cast<int>(random() % 613)};
+    states[limits.FlatIndex(c)] = CellState::kOccupied;
+    occupied.push_back(c);
+  }
+  const std::vector<double> radii = {0.40, 0.30};
+  std::vector<uint8_t> expected(states.size(), 0);
+  for (const double r : radii) {
+    std::vector<uint8_t> one(states.size(), 0);
+    const int reach = static_cast<int>(r / 0.05) + 1;
+    for (const CellIndex& o : occupied) {
+      for (int y = o.y - reach; y <= o.y + reach; ++y) {
+        for (int x = o.x - reach; x <= o.x + reach; ++x) {
+          const CellIndex c{x, y};
+          if (!limits.Contains(c)) continue;
+          if ((limits.CellCenter(c) - limits.CellCenter(o)).norm() <= r + 1e-9) {
+            one[limits.FlatIndex(c)] = 1;
+          }
+        }
+      }
+    }
+    for (size_t i = 0; i < one.size(); ++i) expected[i] += one[i];
+  }
+  EXPECT_TRUE(InflationLevels(states, limits, radii) == expected);
 }
 
 TEST(InflationLevels, RejectsNoRadii) {

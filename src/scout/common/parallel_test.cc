@@ -1,0 +1,70 @@
+#include "scout/common/parallel.h"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <stdexcept>
+#include <thread>
+#include <vector>
+
+namespace scout::common {
+namespace {
+
+TEST(ParallelFor, VisitsEveryIndexExactlyOnceInContiguousChunks) {
+  for (const int64_t n : {0, 1, 2, 3, 7, 100, 1001}) {
+    for (const int64_t min_per_thread : {1, 2, 50, 5000}) {
+      std::vector<std::atomic<int>> visits(n);
+      std::atomic<int> chunks = 0;
+      ParallelFor(n, min_per_thread, [&](int64_t begin, int64_t end) {
+        EXPECT_LE(0, begin);
+        EXPECT_LT(begin, end);
+        EXPECT_LE(end, n);
+        ++chunks;
+        for (int64_t i = begin; i < end; ++i) ++visits[i];
+      });
+      for (int64_t i = 0; i < n; ++i) EXPECT_EQ(visits[i], 1) << "n " << n << " index " << i;
+      // Never more chunks than threads, and none smaller than asked for
+      // unless there is only one.
+      EXPECT_LE(chunks, MaxThreads());
+      if (n > 0 && n < 2 * min_per_thread) {
+        EXPECT_EQ(chunks, 1) << n << " " << min_per_thread;
+      }
+    }
+  }
+}
+
+TEST(ParallelFor, UsesOtherThreadsForLargeRangesWhenTheMachineHasThem) {
+  if (MaxThreads() < 2) GTEST_SKIP() << "one hardware thread: everything runs on the caller";
+  std::atomic<int> elsewhere = 0;
+  const std::thread::id caller = std::this_thread::get_id();
+  ParallelFor(1000, 10,
+              [&](int64_t, int64_t) { elsewhere += std::this_thread::get_id() != caller; });
+  EXPECT_GE(elsewhere, 1);
+}
+
+TEST(ParallelFor, RethrowsAChunksExceptionAfterAllChunksEnded) {
+  std::atomic<int> finished = 0;
+  EXPECT_THROW(ParallelFor(1000, 1,
+                           [&](int64_t begin, int64_t) {
+                             if (begin > 0) throw std::runtime_error("chunk failed");
+                             ++finished;
+                           }),
+               std::runtime_error);
+  EXPECT_EQ(finished, 1);  // the caller's chunk still ran to its end
+}
+
+TEST(ParallelInvoke, RunsBothAndRethrowsEitherFailure) {
+  int a = 0, b = 0;
+  ParallelInvoke([&] { a = 1; }, [&] { b = 2; });
+  EXPECT_EQ(a, 1);
+  EXPECT_EQ(b, 2);
+  EXPECT_THROW(ParallelInvoke([] { throw std::runtime_error("a"); }, [] {}), std::runtime_error);
+  EXPECT_THROW(ParallelInvoke([] {}, [] { throw std::logic_error("b"); }), std::logic_error);
+  bool b_ran = false;
+  EXPECT_THROW(ParallelInvoke([] { throw std::runtime_error("a"); }, [&] { b_ran = true; }),
+               std::runtime_error);
+  EXPECT_TRUE(b_ran);
+}
+
+}  // namespace
+}  // namespace scout::common
