@@ -1,6 +1,7 @@
 #ifndef SCOUT_SLAM_CONSTRAINT_BUILDER_H_
 #define SCOUT_SLAM_CONSTRAINT_BUILDER_H_
 
+#include <atomic>
 #include <map>
 #include <memory>
 #include <optional>
@@ -105,7 +106,8 @@ class FixedRatioSampler {
 };
 
 // Finds loop-closure constraints between nodes (scans) and finished submaps.
-// Not thread-safe: one thread (the pose graph's worker) drives it.
+// Not thread-safe, except that Search may run for several pairs at once (it
+// only reads the matchers): one thread (the pose graph's worker) drives it.
 class ConstraintBuilder {
  public:
   // Throws std::invalid_argument if 'options' are invalid.
@@ -157,10 +159,10 @@ class ConstraintBuilder {
   ConstraintBuilderOptions options_;
   CeresScanMatcher ceres_scan_matcher_;
   std::map<int, SubmapMatcher> submaps_;
-  int num_searches_ = 0;
-  int num_found_ = 0;
+  std::atomic<int> num_searches_ = 0;  // counted by concurrent searches
+  std::atomic<int> num_found_ = 0;
   int num_without_overlap_ = 0;
-  int num_seeing_through_ = 0;
+  std::atomic<int> num_seeing_through_ = 0;
 };
 
 // Fraction of 'points' (scan frame) that, placed by 'pose' (scan -> grid

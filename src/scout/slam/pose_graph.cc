@@ -6,6 +6,8 @@
 #include <string>
 #include <utility>
 
+#include "scout/common/parallel.h"
+
 namespace scout::slam {
 namespace {
 
@@ -166,7 +168,9 @@ void PoseGraph::ComputeConstraints(int node_id, const std::vector<int>& newly_fi
       finished_before.push_back(submap_id);
     }
   }
-  for (int submap_id : finished_before) SearchPair(node_id, submap_id);
+  std::vector<std::pair<int, int>> pairs;
+  for (int submap_id : finished_before) pairs.emplace_back(node_id, submap_id);
+  SearchPairs(pairs);
 
   // A submap that just finished is searched against every older node; newer
   // nodes will meet it in their own step above.
@@ -185,7 +189,9 @@ void PoseGraph::ComputeConstraints(int node_id, const std::vector<int>& newly_fi
       }
     }
     constraint_builder_.AddFinishedSubmap(submap_id, std::move(grid));
-    for (int other : candidates) SearchPair(other, submap_id);
+    pairs.clear();
+    for (int other : candidates) pairs.emplace_back(other, submap_id);
+    SearchPairs(pairs);
   }
 }
 
@@ -196,34 +202,55 @@ bool PoseGraph::IsNeighbour(const std::vector<int>& node_submaps, int submap_id)
   return false;
 }
 
-void PoseGraph::SearchPair(int node_id, int submap_id) {
-  geometry::Rigid2d initial_relative_pose;
-  std::shared_ptr<const PointCloud> points;
-  double travel_m = 0.0;
-  double node_travel_m = 0.0;
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    initial_relative_pose =
-        submaps_[submap_id].state.global_pose.inverse() * nodes_[node_id].data.global_pose;
-    points = nodes_[node_id].points;
-    // Trajectory between the node and the nearest of the submap's nodes
-    // (inserted consecutively, so their travel is an interval).
-    const std::vector<int>& members = submaps_[submap_id].node_ids;
-    node_travel_m = nodes_[node_id].travel_m;
-    const double first_m = nodes_[members.front()].travel_m;
-    const double last_m = nodes_[members.back()].travel_m;
-    travel_m = std::max({0.0, first_m - node_travel_m, node_travel_m - last_m});
+void PoseGraph::SearchPairs(const std::vector<std::pair<int, int>>& pairs) {
+  struct Search {
+    int node_id = 0;
+    int submap_id = 0;
+    geometry::Rigid2d initial_relative_pose;
+    std::shared_ptr<const PointCloud> points;
+    double travel_m = 0.0;
+  };
+  std::vector<Search> chosen;
+  for (const auto& [node_id, submap_id] : pairs) {
+    Search s;
+    s.node_id = node_id;
+    s.submap_id = submap_id;
+    double node_travel_m = 0.0;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      s.initial_relative_pose =
+          submaps_[submap_id].state.global_pose.inverse() * nodes_[node_id].data.global_pose;
+      s.points = nodes_[node_id].points;
+      // Trajectory between the node and the nearest of the submap's nodes
+      // (inserted consecutively, so their travel is an interval).
+      const std::vector<int>& members = submaps_[submap_id].node_ids;
+      node_travel_m = nodes_[node_id].travel_m;
+      const double first_m = nodes_[members.front()].travel_m;
+      const double last_m = nodes_[members.back()].travel_m;
+      s.travel_m = std::max({0.0, first_m - node_travel_m, node_travel_m - last_m});
+    }
+    if (constraint_builder_.ShouldSearch(submap_id, s.initial_relative_pose, *s.points,
+                                         node_travel_m)) {
+      chosen.push_back(std::move(s));
+    }
   }
-  if (!constraint_builder_.ShouldSearch(submap_id, initial_relative_pose, *points, node_travel_m)) {
-    return;
-  }
-  const std::optional<Constraint> found =
-      constraint_builder_.Search(submap_id, node_id, initial_relative_pose, *points, travel_m);
+  // Each branch-and-bound search takes milliseconds and they are independent:
+  // with a finished submap, every older node nearby is searched at once.
+  std::vector<std::optional<Constraint>> found(chosen.size());
+  common::ParallelFor(static_cast<int64_t>(chosen.size()), 1, [&](int64_t begin, int64_t end) {
+    for (int64_t i = begin; i < end; ++i) {
+      const Search& s = chosen[i];
+      found[i] = constraint_builder_.Search(s.submap_id, s.node_id, s.initial_relative_pose,
+                                            *s.points, s.travel_m);
+    }
+  });
   std::lock_guard<std::mutex> lock(mutex_);
-  ++stats_.num_searches;
-  if (found) {
-    constraints_.push_back(*found);
-    ++stats_.num_loop_closures;
+  for (const std::optional<Constraint>& f : found) {
+    ++stats_.num_searches;
+    if (f) {
+      constraints_.push_back(*f);
+      ++stats_.num_loop_closures;
+    }
   }
 }
 

@@ -5,6 +5,7 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "scout/geometry/rigid_transform.h"
@@ -146,7 +147,11 @@ class PoseGraph {
 
   // Background steps, run in scheduling order by work_queue_.
   void ComputeConstraints(int node_id, const std::vector<int>& newly_finished);
-  void SearchPair(int node_id, int submap_id);
+  // Searches the (node id, submap id) 'pairs' the constraint builder
+  // chooses (in order: its samplers count), the searches themselves on
+  // several threads, and adds the closures found in the order of 'pairs', so
+  // the graph is the same as searched one by one.
+  void SearchPairs(const std::vector<std::pair<int, int>>& pairs);
   // True if 'submap_id' is a trajectory neighbour of a submap in 'node_submaps'.
   bool IsNeighbour(const std::vector<int>& node_submaps, int submap_id) const;
   void Optimize(int num_nodes, int num_submaps);
