@@ -9,13 +9,14 @@ namespace scout::common {
 // Threads the loops below use at most: the machine's hardware threads.
 int MaxThreads();
 
-// Runs body(begin, end) over [0, n) in contiguous chunks, one per thread (the
-// calling thread takes the first), and returns when all are done. Fewer
-// threads when a chunk would hold fewer than 'min_per_thread' indices (small
-// grids are not worth a thread). Every index lands in exactly one chunk, so a
-// body that writes only its own indices computes what the serial loop does,
-// on any number of threads: results stay bit-identical and deterministic.
-// Rethrows the exception of a failed chunk after all have ended.
+// Runs body(begin, end) over [0, n) in contiguous blocks on up to
+// MaxThreads() threads (the calling thread is one of them), and returns when
+// all are done. Fewer threads when one would get fewer than 'min_per_thread'
+// indices (small grids are not worth a thread); a single thread runs
+// body(0, n). Every index lands in exactly one block, so a body that writes
+// only its own indices computes what the serial loop does, on any number of
+// threads: results stay bit-identical and deterministic. Rethrows the
+// exception of a failed block after all threads have ended.
 void ParallelFor(int64_t n, int64_t min_per_thread,
                  const std::function<void(int64_t begin, int64_t end)>& body);
 

@@ -3,6 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
+#include <mutex>
+#include <set>
 #include <stdexcept>
 #include <thread>
 #include <vector>
@@ -10,7 +13,7 @@
 namespace scout::common {
 namespace {
 
-TEST(ParallelFor, VisitsEveryIndexExactlyOnceInContiguousChunks) {
+TEST(ParallelFor, VisitsEveryIndexExactlyOnceInContiguousBlocks) {
   for (const int64_t n : {0, 1, 2, 3, 7, 100, 1001}) {
     for (const int64_t min_per_thread : {1, 2, 50, 5000}) {
       std::vector<std::atomic<int>> visits(n);
@@ -23,9 +26,7 @@ TEST(ParallelFor, VisitsEveryIndexExactlyOnceInContiguousChunks) {
         for (int64_t i = begin; i < end; ++i) ++visits[i];
       });
       for (int64_t i = 0; i < n; ++i) EXPECT_EQ(visits[i], 1) << "n " << n << " index " << i;
-      // Never more chunks than threads, and none smaller than asked for
-      // unless there is only one.
-      EXPECT_LE(chunks, MaxThreads());
+      // One block for the whole range when it is too small to share.
       if (n > 0 && n < 2 * min_per_thread) {
         EXPECT_EQ(chunks, 1) << n << " " << min_per_thread;
       }
@@ -35,22 +36,39 @@ TEST(ParallelFor, VisitsEveryIndexExactlyOnceInContiguousChunks) {
 
 TEST(ParallelFor, UsesOtherThreadsForLargeRangesWhenTheMachineHasThem) {
   if (MaxThreads() < 2) GTEST_SKIP() << "one hardware thread: everything runs on the caller";
-  std::atomic<int> elsewhere = 0;
-  const std::thread::id caller = std::this_thread::get_id();
-  ParallelFor(1000, 10,
-              [&](int64_t, int64_t) { elsewhere += std::this_thread::get_id() != caller; });
-  EXPECT_GE(elsewhere, 1);
+  // The first block waits until another block started, so the other blocks
+  // must go to another thread (it would wait forever, up to the timeout, if
+  // the caller ran them all).
+  std::atomic<bool> first_taken = false, other_started = false;
+  std::mutex mutex;
+  std::set<std::thread::id> threads;
+  ParallelFor(1000, 10, [&](int64_t, int64_t) {
+    {
+      std::lock_guard<std::mutex> lock(mutex);
+      threads.insert(std::this_thread::get_id());
+    }
+    if (!first_taken.exchange(true)) {
+      const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+      while (!other_started && std::chrono::steady_clock::now() < give_up) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+      }
+    } else {
+      other_started = true;
+    }
+  });
+  EXPECT_TRUE(other_started);
+  EXPECT_GE(threads.size(), 2u);
 }
 
-TEST(ParallelFor, RethrowsAChunksExceptionAfterAllChunksEnded) {
+TEST(ParallelFor, RethrowsABlocksException) {
   std::atomic<int> finished = 0;
   EXPECT_THROW(ParallelFor(1000, 1,
                            [&](int64_t begin, int64_t) {
-                             if (begin > 0) throw std::runtime_error("chunk failed");
+                             if (begin > 0) throw std::runtime_error("block failed");
                              ++finished;
                            }),
                std::runtime_error);
-  EXPECT_EQ(finished, 1);  // the caller's chunk still ran to its end
+  EXPECT_LE(finished, 1);  // only the first block succeeds
 }
 
 TEST(ParallelInvoke, RunsBothAndRethrowsEitherFailure) {
