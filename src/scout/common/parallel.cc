@@ -46,4 +46,27 @@ void ParallelFor(int64_t n, int64_t min_per_thread,
   }
 }
 
+void ParallelInvoke(const std::function<void()>& a, const std::function<void()>& b) {
+  if (MaxThreads() == 1) {
+    a();
+    return b();
+  }
+  std::exception_ptr failure_a, failure_b;
+  std::thread helper([&] {
+    try {
+      a();
+    } catch (...) {
+      failure_a = std::current_exception();
+    }
+  });
+  try {
+    b();
+  } catch (...) {
+    failure_b = std::current_exception();
+  }
+  helper.join();
+  if (failure_a) std::rethrow_exception(failure_a);
+  if (failure_b) std::rethrow_exception(failure_b);
+}
+
 }  // namespace scout::common

@@ -20,6 +20,10 @@ int MaxThreads();
 void ParallelFor(int64_t n, int64_t min_per_thread,
                  const std::function<void(int64_t begin, int64_t end)>& body);
 
+// Runs 'a' on another thread and 'b' on this one, and returns when both are
+// done; rethrows the exception of either (a's first).
+void ParallelInvoke(const std::function<void()>& a, const std::function<void()>& b);
+
 }  // namespace scout::common
 
 #endif  // SCOUT_COMMON_PARALLEL_H_

@@ -71,5 +71,18 @@ TEST(ParallelFor, RethrowsABlocksException) {
   EXPECT_LE(finished, 1);  // only the first block succeeds
 }
 
+TEST(ParallelInvoke, RunsBothAndRethrowsEitherFailure) {
+  int a = 0, b = 0;
+  ParallelInvoke([&] { a = 1; }, [&] { b = 2; });
+  EXPECT_EQ(a, 1);
+  EXPECT_EQ(b, 2);
+  EXPECT_THROW(ParallelInvoke([] { throw std::runtime_error("a"); }, [] {}), std::runtime_error);
+  EXPECT_THROW(ParallelInvoke([] {}, [] { throw std::logic_error("b"); }), std::logic_error);
+  bool b_ran = false;
+  EXPECT_THROW(ParallelInvoke([] { throw std::runtime_error("a"); }, [&] { b_ran = true; }),
+               std::runtime_error);
+  EXPECT_TRUE(b_ran);
+}
+
 }  // namespace
 }  // namespace scout::common

@@ -240,9 +240,14 @@ class GoalManager {
   // frontier point is reachable from there the robot is boxed in, and the
   // search escapes even from a traversable cell.
   Reach ReachFrom(const Eigen::Vector2d& robot, const std::vector<Eigen::Vector2d>& frontier);
-  // Returns the policy's candidates that are not blacklisted, best first.
-  std::vector<GoalCandidate> Rank(const ExploreInput& input,
-                                  const std::vector<Eigen::Vector2d>& frontier, const Reach& reach);
+  // ReachFrom the robot, and the policy's candidates that are not
+  // blacklisted, best first. The policy's work that needs no path distances
+  // runs on another thread while ReachFrom computes them.
+  struct Ranking {
+    Reach reach;
+    std::vector<GoalCandidate> candidates;
+  };
+  Ranking ReachAndRank(const ExploreInput& input, const std::vector<Eigen::Vector2d>& frontier);
   // Plans to the candidates in order (at most max_plan_attempts) and returns
   // the first with a plan; candidates without one are blacklisted.
   Selection PlanFirst(const std::vector<GoalCandidate>& candidates, const ExploreInput& input,

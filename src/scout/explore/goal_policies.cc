@@ -37,7 +37,26 @@ class ScoutPolicy : public GoalPolicy {
   explicit ScoutPolicy(const NavigationPointOptions& o) : options_(o) {}
   std::string_view name() const override { return "scout"; }
   bool needs_path_distances() const override { return true; }
+  std::any Prepare(const PolicyInput& in) const override {
+    return PartitionFrontier(*in.map, Avoiding(in), options_);
+  }
   std::vector<GoalCandidate> Rank(const PolicyInput& in) const override {
+    const FrontierPartition* prepared =
+        in.prepared ? std::any_cast<FrontierPartition>(in.prepared) : nullptr;
+    const FrontierPartition partition =
+        prepared ? FrontierPartition{} : PartitionFrontier(*in.map, Avoiding(in), options_);
+    std::vector<GoalCandidate> goals;
+    for (const NavigationPoint& p :
+         ComputeNavigationPoints(*in.map, *in.distances, prepared ? *prepared : partition, in.robot,
+                                 in.current_goal, options_)) {
+      goals.push_back({p.position, p.revenue});
+    }
+    return goals;  // already best first
+  }
+
+ private:
+  // The frontier without the points near blacklisted goals.
+  static std::vector<Eigen::Vector2d> Avoiding(const PolicyInput& in) {
     std::vector<Eigen::Vector2d> frontier;
     const double r2 = in.avoid_radius_m * in.avoid_radius_m;
     for (const Eigen::Vector2d& p : *in.frontier) {
@@ -46,15 +65,9 @@ class ScoutPolicy : public GoalPolicy {
         frontier.push_back(p);
       }
     }
-    std::vector<GoalCandidate> goals;
-    for (const NavigationPoint& p : ComputeNavigationPoints(*in.map, *in.distances, frontier,
-                                                            in.robot, in.current_goal, options_)) {
-      goals.push_back({p.position, p.revenue});
-    }
-    return goals;  // already best first
+    return frontier;
   }
 
- private:
   NavigationPointOptions options_;
 };
 

@@ -2,6 +2,7 @@
 #define SCOUT_EXPLORE_GOAL_POLICIES_H_
 
 #include <Eigen/Core>
+#include <any>
 #include <memory>
 #include <optional>
 #include <string>
@@ -29,6 +30,8 @@ struct PolicyInput {
   // component whose nearest point failed offers its next point instead.
   const std::vector<Eigen::Vector2d>* avoid = nullptr;
   double avoid_radius_m = 0.0;
+  // What the policy's Prepare returned for this input, if it ran.
+  const std::any* prepared = nullptr;
 };
 
 struct GoalCandidate {
@@ -65,6 +68,11 @@ class GoalPolicy {
   virtual ~GoalPolicy() = default;
   virtual std::string_view name() const = 0;
   virtual bool needs_path_distances() const { return false; }
+  // The work of Rank that needs no path distances (input.distances unset),
+  // which the goal manager runs while it computes them; Rank reads the result
+  // from input.prepared and does the work itself without it. Must not
+  // change the policy: it runs on another thread.
+  virtual std::any Prepare(const PolicyInput& /*input*/) const { return {}; }
   // Returns goals, best first.
   virtual std::vector<GoalCandidate> Rank(const PolicyInput& input) const = 0;
 };

@@ -87,32 +87,52 @@ std::vector<int> SplitByConnectivity(const PlanningMap& map,
   return label;
 }
 
+FrontierPartition PartitionFrontier(const PlanningMap& map,
+                                    const std::vector<Eigen::Vector2d>& frontier,
+                                    const NavigationPointOptions& options) {
+  Validate(options);
+  FrontierPartition partition;
+  if (frontier.empty()) return partition;
+  const MeanShiftClusters clusters = MeanShift(frontier, options.mean_shift);
+  partition.points.resize(clusters.centres.size());
+  for (size_t i = 0; i < frontier.size(); ++i) {
+    partition.points[clusters.label[i]].push_back(frontier[i]);
+  }
+  for (const std::vector<Eigen::Vector2d>& points : partition.points) {
+    partition.component.push_back(SplitByConnectivity(map, points, options.connectivity_margin_m));
+    const std::vector<int>& component = partition.component.back();
+    partition.num_components +=
+        points.empty() ? 0 : *std::max_element(component.begin(), component.end()) + 1;
+  }
+  return partition;
+}
+
 std::vector<NavigationPoint> ComputeNavigationPoints(
     const PlanningMap& map, const PathDistanceField& distances,
     const std::vector<Eigen::Vector2d>& frontier, const Eigen::Vector2d& robot,
     const std::optional<Eigen::Vector2d>& current_goal, const NavigationPointOptions& options,
     NavigationPointStats* stats) {
+  return ComputeNavigationPoints(map, distances, PartitionFrontier(map, frontier, options), robot,
+                                 current_goal, options, stats);
+}
+
+std::vector<NavigationPoint> ComputeNavigationPoints(
+    const PlanningMap& map, const PathDistanceField& distances, const FrontierPartition& partition,
+    const Eigen::Vector2d& robot, const std::optional<Eigen::Vector2d>& current_goal,
+    const NavigationPointOptions& options, NavigationPointStats* stats) {
   Validate(options);
   NavigationPointStats local_stats;
   NavigationPointStats& st = stats ? *stats : local_stats;
   st = {};
   std::vector<NavigationPoint> result;
-  if (frontier.empty()) return result;
-
-  const MeanShiftClusters clusters = MeanShift(frontier, options.mean_shift);
-  st.clusters = static_cast<int>(clusters.centres.size());
-  std::vector<std::vector<int>> members(clusters.centres.size());
-  for (size_t i = 0; i < frontier.size(); ++i) members[clusters.label[i]].push_back(i);
-
+  st.clusters = static_cast<int>(partition.points.size());
+  st.components = partition.num_components;
   const double snap = map.options().goal_snap_radius_m;
-  for (size_t k = 0; k < members.size(); ++k) {
-    std::vector<Eigen::Vector2d> points;
-    for (int i : members[k]) points.push_back(frontier[i]);
-    const std::vector<int> component =
-        SplitByConnectivity(map, points, options.connectivity_margin_m);
+  for (size_t k = 0; k < partition.points.size(); ++k) {
+    const std::vector<Eigen::Vector2d>& points = partition.points[k];
+    const std::vector<int>& component = partition.component[k];
     const int num_components =
         points.empty() ? 0 : *std::max_element(component.begin(), component.end()) + 1;
-    st.components += num_components;
 
     // Per component: its size and its point nearest to the robot by path.
     struct Best {

@@ -69,6 +69,24 @@ std::vector<NavigationPoint> ComputeNavigationPoints(
     const std::optional<Eigen::Vector2d>& current_goal, const NavigationPointOptions& options,
     NavigationPointStats* stats = nullptr);
 
+// The half of ComputeNavigationPoints that needs no path distances: the
+// mean-shift clusters of a frontier and each cluster's points (in frontier
+// order) with their connectivity components. The goal manager computes it
+// while it computes the path distances.
+struct FrontierPartition {
+  std::vector<std::vector<Eigen::Vector2d>> points;  // per cluster
+  std::vector<std::vector<int>> component;           // per cluster, per point
+  int num_components = 0;
+};
+FrontierPartition PartitionFrontier(const PlanningMap& map,
+                                    const std::vector<Eigen::Vector2d>& frontier,
+                                    const NavigationPointOptions& options);
+// ComputeNavigationPoints on the partition of 'map''s frontier.
+std::vector<NavigationPoint> ComputeNavigationPoints(
+    const PlanningMap& map, const PathDistanceField& distances, const FrontierPartition& partition,
+    const Eigen::Vector2d& robot, const std::optional<Eigen::Vector2d>& current_goal,
+    const NavigationPointOptions& options, NavigationPointStats* stats = nullptr);
+
 // Returns, for each point of one cluster, a component label (0, 1, ...) such
 // that two points share a label iff a 4-connected path of non-occupied cells
 // joins their cells within the window described above. A point whose cell is

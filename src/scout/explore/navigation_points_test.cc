@@ -4,8 +4,11 @@
 #include <rapidcheck/gtest.h>
 
 #include <algorithm>
+#include <any>
+#include <memory>
 #include <set>
 
+#include "scout/explore/goal_policies.h"
 #include "scout/explore/path_planner.h"
 #include "scout/explore/test_maps.h"
 
@@ -182,6 +185,56 @@ RC_GTEST_PROP(NavigationPointsProperty, PointsAreReachableFrontierPoints, ()) {
     RC_ASSERT(std::abs(path->cell_path_length_m -
                        (p.cost_m - (robot - map.limits().CellCenter(*field.start())).norm())) <
               1e-3);
+  }
+}
+
+// The goal manager clusters the frontier (Prepare) on another thread while it
+// computes the path distances; the ranking must be the one Rank computes
+// on its own, and so must ComputeNavigationPoints on a ready partition.
+RC_GTEST_PROP(NavigationPointsProperty, PreparedPartitionRanksAsRankAlone, ()) {
+  MapBuilder b(40, 30);
+  b.Wall(0, 0, 39, 29).Free(1, 1, 38, 28);
+  const int blocks = *rc::gen::inRange(0, 8);
+  for (int i = 0; i < blocks; ++i) {
+    const int x = *rc::gen::inRange(1, 36), y = *rc::gen::inRange(1, 26);
+    const int w = *rc::gen::inRange(1, 10), h = *rc::gen::inRange(1, 10);
+    const bool wall = *rc::gen::arbitrary<bool>();
+    b.Fill(x, y, x + w, y + h, wall ? grid::CellState::kOccupied : grid::CellState::kUnknown);
+  }
+  const PlanningMap map(b.map(), testing::SmallRobot());
+  const Eigen::Vector2d robot = b.At(*rc::gen::inRange(1, 39), *rc::gen::inRange(1, 29));
+  RC_PRE(map.Traversable(map.limits().CellContaining(robot)));
+  const PathDistanceField field(map, robot);
+  const auto frontier = b.FrontierPoints();
+  RC_PRE(!frontier.empty());
+  const std::vector<Eigen::Vector2d> avoid = {frontier[frontier.size() / 2]};
+
+  const auto direct = ComputeNavigationPoints(map, field, frontier, robot, {}, {});
+  const auto split =
+      ComputeNavigationPoints(map, field, PartitionFrontier(map, frontier, {}), robot, {}, {});
+  RC_ASSERT(direct.size() == split.size());
+  for (size_t i = 0; i < direct.size(); ++i) {
+    RC_ASSERT(direct[i].position == split[i].position);
+    RC_ASSERT(direct[i].revenue == split[i].revenue);
+    RC_ASSERT(direct[i].component_size == split[i].component_size);
+  }
+
+  const std::unique_ptr<GoalPolicy> policy = MakeGoalPolicy("scout", {});
+  PolicyInput in;
+  in.map = &map;
+  in.frontier = &frontier;
+  in.robot = robot;
+  in.avoid = &avoid;
+  in.avoid_radius_m = 0.3;
+  const std::any prepared = policy->Prepare(in);
+  in.distances = &field;
+  const std::vector<GoalCandidate> alone = policy->Rank(in);
+  in.prepared = &prepared;
+  const std::vector<GoalCandidate> with_prepared = policy->Rank(in);
+  RC_ASSERT(alone.size() == with_prepared.size());
+  for (size_t i = 0; i < alone.size(); ++i) {
+    RC_ASSERT(alone[i].position == with_prepared[i].position);
+    RC_ASSERT(alone[i].score == with_prepared[i].score);
   }
 }
 
