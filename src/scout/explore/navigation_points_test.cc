@@ -169,28 +169,40 @@ MapBuilder RandomRoom() {
   return b;
 }
 
-RC_GTEST_PROP(NavigationPointsProperty, PointsAreReachableFrontierPoints, ()) {
-  const MapBuilder b = RandomRoom();
-  const PlanningMap map(b.map(), testing::SmallRobot());
+// A robot on a random traversable cell of 'map' (built from 'b').
+Eigen::Vector2d RandomRobot(const MapBuilder& b, const PlanningMap& map) {
   const Eigen::Vector2d robot = b.At(*rc::gen::inRange(1, 39), *rc::gen::inRange(1, 29));
   RC_PRE(map.Traversable(map.limits().CellContaining(robot)));
-  const PathDistanceField field(map, robot);
-  const auto frontier = b.FrontierPoints();
-  const auto points = ComputeNavigationPoints(map, field, frontier, robot, {}, {});
+  return robot;
+}
+
+// A RandomRoom, its planning map, a robot in it, the path distances from the
+// robot and the room's frontier.
+struct RandomScene {
+  MapBuilder builder = RandomRoom();
+  PlanningMap map{builder.map(), testing::SmallRobot()};
+  Eigen::Vector2d robot = RandomRobot(builder, map);
+  PathDistanceField field{map, robot};
+  std::vector<Eigen::Vector2d> frontier = builder.FrontierPoints();
+};
+
+RC_GTEST_PROP(NavigationPointsProperty, PointsAreReachableFrontierPoints, ()) {
+  const RandomScene s;
+  const auto points = ComputeNavigationPoints(s.map, s.field, s.frontier, s.robot, {}, {});
   std::set<std::pair<int, int>> seen;
   for (const NavigationPoint& p : points) {
-    RC_ASSERT(Contains(frontier, p.position));
-    const auto reached = field.NearestReached(p.position, map.options().goal_snap_radius_m);
+    RC_ASSERT(Contains(s.frontier, p.position));
+    const auto reached = s.field.NearestReached(p.position, s.map.options().goal_snap_radius_m);
     RC_ASSERT(reached.has_value());
     RC_ASSERT(std::abs(reached->distance_m - p.cost_m) < 1e-4);
-    const grid::CellIndex c = map.limits().CellContaining(p.position);
+    const grid::CellIndex c = s.map.limits().CellContaining(p.position);
     RC_ASSERT(seen.insert({c.x, c.y}).second);
     // The planner agrees: a path exists and is no shorter than the cost.
-    const auto path = PathPlanner({}).Plan(map, robot, p.position);
+    const auto path = PathPlanner({}).Plan(s.map, s.robot, p.position);
     RC_ASSERT(path.has_value());
     RC_ASSERT(std::abs(path->cell_path_length_m -
-                       (p.cost_m - (robot - map.limits().CellCenter(*field.start())).norm())) <
-              1e-3);
+                       (p.cost_m -
+                        (s.robot - s.map.limits().CellCenter(*s.field.start())).norm())) < 1e-3);
   }
 }
 
@@ -198,18 +210,13 @@ RC_GTEST_PROP(NavigationPointsProperty, PointsAreReachableFrontierPoints, ()) {
 // computes the path distances; the ranking must be the one Rank computes
 // on its own, and so must ComputeNavigationPoints on a ready partition.
 RC_GTEST_PROP(NavigationPointsProperty, PreparedPartitionRanksAsRankAlone, ()) {
-  const MapBuilder b = RandomRoom();
-  const PlanningMap map(b.map(), testing::SmallRobot());
-  const Eigen::Vector2d robot = b.At(*rc::gen::inRange(1, 39), *rc::gen::inRange(1, 29));
-  RC_PRE(map.Traversable(map.limits().CellContaining(robot)));
-  const PathDistanceField field(map, robot);
-  const auto frontier = b.FrontierPoints();
+  const RandomScene s;
   std::vector<Eigen::Vector2d> avoid;
-  if (!frontier.empty()) avoid.push_back(frontier[frontier.size() / 2]);
+  if (!s.frontier.empty()) avoid.push_back(s.frontier[s.frontier.size() / 2]);
 
-  const auto direct = ComputeNavigationPoints(map, field, frontier, robot, {}, {});
-  const auto split =
-      ComputeNavigationPoints(map, field, PartitionFrontier(map, frontier, {}), robot, {}, {});
+  const auto direct = ComputeNavigationPoints(s.map, s.field, s.frontier, s.robot, {}, {});
+  const auto split = ComputeNavigationPoints(
+      s.map, s.field, PartitionFrontier(s.map, s.frontier, {}), s.robot, {}, {});
   RC_ASSERT(direct.size() == split.size());
   for (size_t i = 0; i < direct.size(); ++i) {
     RC_ASSERT(direct[i].position == split[i].position);
@@ -219,13 +226,13 @@ RC_GTEST_PROP(NavigationPointsProperty, PreparedPartitionRanksAsRankAlone, ()) {
 
   const std::unique_ptr<GoalPolicy> policy = MakeGoalPolicy("scout", {});
   PolicyInput in;
-  in.map = &map;
-  in.frontier = &frontier;
-  in.robot = robot;
+  in.map = &s.map;
+  in.frontier = &s.frontier;
+  in.robot = s.robot;
   in.avoid = &avoid;
   in.avoid_radius_m = 0.3;
   const std::any prepared = policy->Prepare(in);
-  in.distances = &field;
+  in.distances = &s.field;
   const std::vector<GoalCandidate> alone = policy->Rank(in);
   in.prepared = &prepared;
   const std::vector<GoalCandidate> with_prepared = policy->Rank(in);
