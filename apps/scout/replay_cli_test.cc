@@ -108,7 +108,7 @@ TEST_F(ReplayCli, MapsTheLoopAccuratelyAndWritesEveryOutput) {
   // The malformed line is reported with its line number, and the run goes on.
   EXPECT_NE(r.output.find("corridor.log:"), std::string::npos) << r.output;
   for (const char* name : {"summary.json", "map.yaml", "map.pgm", "map.png", "trajectory.tum",
-                           "frontier.csv", "frontiers.png", "report.html"}) {
+                           "reference.tum", "frontier.csv", "frontiers.png", "report.html"}) {
     EXPECT_TRUE(fs::exists(out / name)) << name;
   }
   const nlohmann::json s = nlohmann::json::parse(ReadFile(out / "summary.json"));
@@ -125,12 +125,15 @@ TEST_F(ReplayCli, MapsTheLoopAccuratelyAndWritesEveryOutput) {
   EXPECT_GT(s["peak_rss_mb"].get<double>(), 0.0);
   const nlohmann::json& exact = s["frontier"]["strategies"]["exact"];
   EXPECT_DOUBLE_EQ(exact["accuracy"].get<double>(), 1.0);
-  // One TUM line per node.
-  const std::string tum = ReadFile(out / "trajectory.tum");
-  std::istringstream lines(tum);
-  int poses = 0;
-  for (std::string line; std::getline(lines, line);) poses += !line.empty() && line[0] != '#';
-  EXPECT_EQ(poses, s["slam"]["nodes"].get<int>());
+  // One TUM line per node, and one reference pose per matched node.
+  const auto count_poses = [](const fs::path& file) {
+    std::istringstream lines(ReadFile(file));
+    int poses = 0;
+    for (std::string line; std::getline(lines, line);) poses += !line.empty() && line[0] != '#';
+    return poses;
+  };
+  EXPECT_EQ(count_poses(out / "trajectory.tum"), s["slam"]["nodes"].get<int>());
+  EXPECT_EQ(count_poses(out / "reference.tum"), s["reference"]["matched_scans"].get<int>());
 }
 
 // Scans with repeated times are replayed one period apart, so each still gets

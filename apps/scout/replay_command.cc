@@ -227,9 +227,10 @@ int RunReplay(const ReplayArgs& args) {
                      {"solve_time_s", stats.total_solve_time_s},
                      {"submap_events", stats.num_submap_events},
                      {"synchronous", config.slam.pose_graph.synchronous}};
+  std::vector<io::PosePair> reference_pairs;
   if (reference) {
-    const io::TrajectoryErrors errors =
-        io::ComputeTrajectoryErrors(PairNodesWithReference(dataset, *reference, nodes));
+    reference_pairs = PairNodesWithReference(dataset, *reference, nodes);
+    const io::TrajectoryErrors errors = io::ComputeTrajectoryErrors(reference_pairs);
     summary["reference"] = ReferenceSummary(errors, *reference);
     summary["reference"]["file"] = args.reference;
   }
@@ -243,6 +244,15 @@ int RunReplay(const ReplayArgs& args) {
   out.Stage("map.pgm");
   io::WriteMapPicture(submaps, trajectory, out.Stage("map.png"));
   io::WriteTumTrajectory(trajectory, out.Stage("trajectory.tum"));
+  if (reference) {
+    // The reference pose of every paired node, stamped like trajectory.tum,
+    // so other tools (evo, a notebook) can compare the two without pairing.
+    std::vector<io::StampedPose> paired_reference;
+    paired_reference.reserve(reference_pairs.size());
+    for (const io::PosePair& p : reference_pairs)
+      paired_reference.push_back({p.time_s, p.reference});
+    io::WriteTumTrajectory(paired_reference, out.Stage("reference.tum"));
+  }
   io::WriteFrontierCsv(engine, out.Stage("frontier.csv"));
   io::WriteFrontierPicture(engine, args.picture_strategy, out.Stage("frontiers.png"));
   const std::filesystem::path summary_path = out.Stage("summary.json");
@@ -267,8 +277,8 @@ int RunReplay(const ReplayArgs& args) {
   }
   PrintStrategyTable(engine, std::cout);
   std::cout << "outputs: " << (out.path() / "summary.json").string()
-            << ", map.yaml, map.pgm, map.png, trajectory.tum, frontier.csv, frontiers.png, "
-               "report.html\n";
+            << ", map.yaml, map.pgm, map.png, trajectory.tum, "
+            << (reference ? "reference.tum, " : "") << "frontier.csv, frontiers.png, report.html\n";
   return 0;
 }
 
