@@ -1,7 +1,6 @@
 #include "scout/slam/ceres_scan_matcher.h"
 
 #include <ceres/ceres.h>
-#include <ceres/cubic_interpolation.h>
 
 #include <algorithm>
 #include <cmath>
@@ -9,66 +8,10 @@
 #include <string>
 
 #include "scout/grid/probability_values.h"
+#include "scout/slam/occupied_space_cost.h"
 
 namespace scout::slam {
 namespace {
-
-// Presents the grid to ceres::BiCubicInterpolator as samples at cell centres
-// (row = y, column = x). Every integer index is valid: the outside of the grid
-// reads like unknown cells, so points may be interpolated anywhere.
-class GridSamples {
- public:
-  enum { DATA_DIMENSION = 1 };
-  GridSamples(const grid::ProbabilityGrid& grid, double unknown_probability)
-      : grid_(grid), unknown_probability_(unknown_probability) {}
-
-  void GetValue(int row, int column, double* probability) const {
-    const uint16_t v = grid_.value({column, row});
-    *probability = v == grid::kUnknownValue ? unknown_probability_ : grid::ValueToProbability(v);
-  }
-
- private:
-  const grid::ProbabilityGrid& grid_;
-  const double unknown_probability_;
-};
-
-class OccupiedSpaceCost {
- public:
-  OccupiedSpaceCost(double scale, const PointCloud& points, const grid::ProbabilityGrid& grid,
-                    double unknown_probability)
-      : scale_(scale),
-        points_(points),
-        limits_(grid.limits()),
-        samples_(grid, unknown_probability),
-        interpolator_(samples_) {}
-
-  template <typename T>
-  bool operator()(const T* const pose, T* residuals) const {
-    using std::cos, std::sin;
-    const T c = cos(pose[2]);
-    const T s = sin(pose[2]);
-    const double inv_resolution = 1.0 / limits_.resolution();
-    for (size_t i = 0; i < points_.size(); ++i) {
-      const Eigen::Vector2d& p = points_[i];
-      const T x = c * p.x() - s * p.y() + pose[0];
-      const T y = s * p.x() + c * p.y() + pose[1];
-      // Sample (r, c) sits at the centre of cell (x = c, y = r).
-      const T column = (x - limits_.origin().x()) * inv_resolution - 0.5;
-      const T row = (y - limits_.origin().y()) * inv_resolution - 0.5;
-      T probability;
-      interpolator_.Evaluate(row, column, &probability);
-      residuals[i] = scale_ * (1.0 - probability);
-    }
-    return true;
-  }
-
- private:
-  const double scale_;
-  const PointCloud& points_;
-  const grid::MapLimits limits_;
-  const GridSamples samples_;
-  const ceres::BiCubicInterpolator<GridSamples> interpolator_;
-};
 
 struct TranslationDeltaCost {
   template <typename T>
@@ -130,11 +73,8 @@ geometry::Rigid2d CeresScanMatcher::Match(const Eigen::Vector2d& target_translat
   const double num_points_for_weight =
       std::max(points.size(), static_cast<size_t>(options_.full_weight_num_points));
   const double scale = options_.occupied_space_weight / std::sqrt(num_points_for_weight);
-  problem.AddResidualBlock(
-      new ceres::AutoDiffCostFunction<OccupiedSpaceCost, ceres::DYNAMIC, 3>(
-          new OccupiedSpaceCost(scale, points, grid, options_.unknown_probability),
-          static_cast<int>(points.size())),
-      nullptr, pose);
+  problem.AddResidualBlock(new OccupiedSpaceCost(scale, points, grid, options_.unknown_probability),
+                           nullptr, pose);
   if (options_.translation_weight > 0.0) {
     problem.AddResidualBlock(
         new ceres::AutoDiffCostFunction<TranslationDeltaCost, 2, 3>(

@@ -11,6 +11,8 @@
 #include <string>
 #include <tuple>
 
+#include "scout/slam/relative_pose_cost.h"
+
 namespace scout::slam {
 namespace {
 
@@ -23,52 +25,6 @@ void RequirePositive(const char* key, double value) {
                                 std::to_string(value));
   }
 }
-
-// Wraps an angle into [-pi, pi). floor() has zero derivative, so autodiff
-// sees the plain difference: the residual stays smooth across the wrap.
-template <typename T>
-T NormalizeAngleResidual(const T& angle) {
-  constexpr double kTwoPi = 2.0 * M_PI;
-  using std::floor;
-  return angle - T(kTwoPi) * floor((angle + T(M_PI)) / T(kTwoPi));
-}
-
-// The SPA residual: the measured pose of 'second' in the frame of 'first'
-// minus the one the current estimates imply, scaled by the weights.
-class RelativePoseCost {
- public:
-  RelativePoseCost(const geometry::Rigid2d& measured, double translation_weight,
-                   double rotation_weight)
-      : x_(measured.x()),
-        y_(measured.y()),
-        theta_(measured.theta()),
-        translation_weight_(translation_weight),
-        rotation_weight_(rotation_weight) {}
-
-  template <typename T>
-  bool operator()(const T* const first, const T* const second, T* residual) const {
-    using std::cos;
-    using std::sin;
-    const T c = cos(first[2]);
-    const T s = sin(first[2]);
-    const T dx = second[0] - first[0];
-    const T dy = second[1] - first[1];
-    residual[0] = T(translation_weight_) * (T(x_) - (c * dx + s * dy));
-    residual[1] = T(translation_weight_) * (T(y_) - (-s * dx + c * dy));
-    residual[2] = T(rotation_weight_) * NormalizeAngleResidual(T(theta_) - (second[2] - first[2]));
-    return true;
-  }
-
-  static ceres::CostFunction* Create(const geometry::Rigid2d& measured, double translation_weight,
-                                     double rotation_weight) {
-    return new ceres::AutoDiffCostFunction<RelativePoseCost, 3, 3, 3>(
-        new RelativePoseCost(measured, translation_weight, rotation_weight));
-  }
-
- private:
-  double x_, y_, theta_;
-  double translation_weight_, rotation_weight_;
-};
 
 Pose ToPose(const geometry::Rigid2d& t) { return {t.x(), t.y(), t.theta()}; }
 geometry::Rigid2d FromPose(const Pose& p) { return geometry::Rigid2d(p[0], p[1], p[2]); }
@@ -141,22 +97,21 @@ OptimizationResult OptimizationProblem::Solve(
                                     ? new ceres::HuberLoss(options_.huber_scale)
                                     : nullptr;
     problem.AddResidualBlock(
-        RelativePoseCost::Create(c->relative_pose, c->translation_weight, c->rotation_weight), loss,
+        new RelativePoseCost(c->relative_pose, c->translation_weight, c->rotation_weight), loss,
         submap_poses[c->submap_id].data(), node_poses[c->node_id].data());
   }
   for (int i = 0; i + 1 < num_nodes; ++i) {
     const OptimizationNode& a = nodes[i];
     const OptimizationNode& b = nodes[i + 1];
-    problem.AddResidualBlock(RelativePoseCost::Create(a.local_pose.inverse() * b.local_pose,
-                                                      options_.local_slam_pose_translation_weight,
-                                                      options_.local_slam_pose_rotation_weight),
+    problem.AddResidualBlock(new RelativePoseCost(a.local_pose.inverse() * b.local_pose,
+                                                  options_.local_slam_pose_translation_weight,
+                                                  options_.local_slam_pose_rotation_weight),
                              nullptr, node_poses[i].data(), node_poses[i + 1].data());
     if (options_.use_odometry_constraints && a.odometry_pose && b.odometry_pose) {
-      problem.AddResidualBlock(
-          RelativePoseCost::Create(a.odometry_pose->inverse() * *b.odometry_pose,
-                                   options_.odometry_translation_weight,
-                                   options_.odometry_rotation_weight),
-          nullptr, node_poses[i].data(), node_poses[i + 1].data());
+      problem.AddResidualBlock(new RelativePoseCost(a.odometry_pose->inverse() * *b.odometry_pose,
+                                                    options_.odometry_translation_weight,
+                                                    options_.odometry_rotation_weight),
+                               nullptr, node_poses[i].data(), node_poses[i + 1].data());
     }
   }
   if (num_submaps > 0 && problem.HasParameterBlock(submap_poses[0].data())) {
