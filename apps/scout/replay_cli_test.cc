@@ -121,6 +121,13 @@ TEST_F(ReplayCli, MapsTheLoopAccuratelyAndWritesEveryOutput) {
   // centimetres of the truth.
   EXPECT_EQ(s["reference"]["matched_scans"].get<int>(), s["slam"]["nodes"].get<int>());
   EXPECT_LT(s["reference"]["ate_rmse_m"].get<double>(), 0.10) << s["reference"].dump();
+  // The scans agree with each other within centimetres, placed by the
+  // estimate and by the true poses alike.
+  const nlohmann::json& consistency = s["consistency"];
+  EXPECT_GT(consistency["scans"].get<int>(), 100) << consistency.dump();
+  EXPECT_LT(consistency["estimate_mean_distance_m"].get<double>(), 0.03) << consistency.dump();
+  EXPECT_LT(consistency["reference_mean_distance_m"].get<double>(), 0.03) << consistency.dump();
+  EXPECT_NE(r.output.find("scan consistency: "), std::string::npos) << r.output;
   EXPECT_GT(s["realtime_factor"].get<double>(), 0.0);
   EXPECT_GT(s["peak_rss_mb"].get<double>(), 0.0);
   const nlohmann::json& exact = s["frontier"]["strategies"]["exact"];

@@ -6,6 +6,7 @@
 #include <iomanip>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "apps/scout/command_util.h"
 #include "apps/scout/report_command.h"
@@ -21,6 +22,7 @@
 #include "scout/io/odometry_noise.h"
 #include "scout/io/output_directory.h"
 #include "scout/io/replay_reference.h"
+#include "scout/io/scan_consistency.h"
 #include "scout/io/trajectory_metrics.h"
 #include "scout/io/tum_trajectory.h"
 #include "scout/slam/map_builder.h"
@@ -65,21 +67,61 @@ bool RetimeIfCoarse(io::Dataset* dataset) {
   return true;
 }
 
-// Pairs every SLAM node with the reference pose of its scan.
-std::vector<io::PosePair> PairNodesWithReference(const io::Dataset& dataset,
-                                                 const io::ScanReference& reference,
-                                                 const std::vector<slam::TimedPose>& nodes) {
-  std::vector<io::PosePair> pairs;
+// Returns the dataset index of every node's scan (nodes are in scan order and
+// carry their scan's own timestamp), -1 for none.
+std::vector<int> NodeScans(const io::Dataset& dataset, const std::vector<slam::TimedPose>& nodes) {
+  std::vector<int> node_scans;
+  node_scans.reserve(nodes.size());
   size_t scan = 0;
   for (const slam::TimedPose& node : nodes) {
-    // Nodes are in scan order and carry their scan's own timestamp.
     while (scan < dataset.scans.size() && dataset.scans[scan].time_s < node.time_s) ++scan;
-    if (scan == dataset.scans.size()) break;
-    if (dataset.scans[scan].time_s == node.time_s && reference.poses[scan]) {
-      pairs.push_back({node.time_s, node.pose, *reference.poses[scan]});
+    const bool found = scan < dataset.scans.size() && dataset.scans[scan].time_s == node.time_s;
+    node_scans.push_back(found ? static_cast<int>(scan) : -1);
+  }
+  return node_scans;
+}
+
+// Pairs every SLAM node with the reference pose of its scan.
+std::vector<io::PosePair> PairNodesWithReference(const io::ScanReference& reference,
+                                                 const std::vector<slam::TimedPose>& nodes,
+                                                 const std::vector<int>& node_scans) {
+  std::vector<io::PosePair> pairs;
+  for (size_t i = 0; i < nodes.size(); ++i) {
+    if (node_scans[i] >= 0 && reference.poses[node_scans[i]]) {
+      pairs.push_back({nodes[i].time_s, nodes[i].pose, *reference.poses[node_scans[i]]});
     }
   }
   return pairs;
+}
+
+// Reference-free local accuracy (io::MeasureScanConsistency) of the nodes,
+// with each node's scan filtered as local SLAM filters it. With a reference,
+// measured on the nodes it pairs with, for the estimate and the reference.
+nlohmann::json ConsistencySummary(const io::Dataset& dataset,
+                                  const std::vector<slam::TimedPose>& nodes,
+                                  const std::vector<int>& node_scans,
+                                  const io::ScanReference* reference,
+                                  const sensor::RangeFilterOptions& range_filter) {
+  const io::ScanConsistencyOptions options;
+  std::vector<std::vector<Eigen::Vector2d>> points;
+  std::vector<geometry::Rigid2d> estimate, reference_poses;
+  for (size_t i = 0; i < nodes.size(); ++i) {
+    const int scan = node_scans[i];
+    if (scan < 0 || (reference != nullptr && !reference->poses[scan])) continue;
+    points.push_back(sensor::ToRangeData(dataset.scans[scan], range_filter).returns);
+    estimate.push_back(nodes[i].pose);
+    if (reference != nullptr) reference_poses.push_back(*reference->poses[scan]);
+  }
+  const io::ScanConsistency of_estimate = io::MeasureScanConsistency(points, estimate, options);
+  nlohmann::json json = {{"previous_scans", options.previous_scans},
+                         {"max_distance_m", options.max_distance_m},
+                         {"scans", of_estimate.scans},
+                         {"estimate_mean_distance_m", of_estimate.mean_distance_m}};
+  if (reference != nullptr) {
+    json["reference_mean_distance_m"] =
+        io::MeasureScanConsistency(points, reference_poses, options).mean_distance_m;
+  }
+  return json;
 }
 
 nlohmann::json ReferenceSummary(const io::TrajectoryErrors& e, const io::ScanReference& r) {
@@ -227,9 +269,13 @@ int RunReplay(const ReplayArgs& args) {
                      {"solve_time_s", stats.total_solve_time_s},
                      {"submap_events", stats.num_submap_events},
                      {"synchronous", config.slam.pose_graph.synchronous}};
+  const std::vector<int> node_scans = NodeScans(dataset, nodes);
+  summary["consistency"] =
+      ConsistencySummary(dataset, nodes, node_scans, reference ? &*reference : nullptr,
+                         config.slam.local.range_filter);
   std::vector<io::PosePair> reference_pairs;
   if (reference) {
-    reference_pairs = PairNodesWithReference(dataset, *reference, nodes);
+    reference_pairs = PairNodesWithReference(*reference, nodes, node_scans);
     const io::TrajectoryErrors errors = io::ComputeTrajectoryErrors(reference_pairs);
     summary["reference"] = ReferenceSummary(errors, *reference);
     summary["reference"]["file"] = args.reference;
@@ -274,6 +320,26 @@ int RunReplay(const ReplayArgs& args) {
               << r["rpe_1s_trans_m"].get<double>() << " m / " << r["rpe_1s_rot_deg"].get<double>()
               << " deg, 10 s " << r["rpe_10s_trans_m"].get<double>() << " m / "
               << r["rpe_10s_rot_deg"].get<double>() << " deg\n";
+  }
+  {
+    const nlohmann::json& c = summary["consistency"];
+    // Millimetres; null (no scan had a pair) prints as a dash.
+    const auto mm = [](const nlohmann::json& v) {
+      std::ostringstream text;
+      if (v.is_number()) {
+        text << std::fixed << std::setprecision(1) << v.get<double>() * 1000.0;
+      } else {
+        text << "-";
+      }
+      return text.str();
+    };
+    std::cout << "scan consistency: " << mm(c["estimate_mean_distance_m"])
+              << " mm from each scan's returns to the " << c["previous_scans"].get<int>()
+              << " scans before it";
+    if (c.contains("reference_mean_distance_m")) {
+      std::cout << " (reference trajectory: " << mm(c["reference_mean_distance_m"]) << " mm)";
+    }
+    std::cout << "\n";
   }
   PrintStrategyTable(engine, std::cout);
   std::cout << "outputs: " << (out.path() / "summary.json").string()

@@ -170,6 +170,16 @@ void AppendReplay(const std::vector<RunData>& runs, std::ostringstream& out) {
       const std::optional<double> t = Number(s, trans), r = Number(s, rot);
       return t && r ? Fixed(t, 3) + " / " + Fixed(r, 2) : std::string(kMissing);
     };
+    // Millimetres, the reference's own in brackets (runs before it was measured: a dash).
+    const auto consistency = [&]() {
+      const std::optional<double> e = Number(s, "consistency/estimate_mean_distance_m");
+      if (!e) return std::string(kMissing);
+      std::string text = Fixed(*e * 1000.0, 1);
+      if (const std::optional<double> r = Number(s, "consistency/reference_mean_distance_m")) {
+        text += " (" + Fixed(*r * 1000.0, 1) + ")";
+      }
+      return text;
+    };
     rows.push_back(
         {run.name, Text(s, "dataset"), Fixed(Number(s, "odom_noise"), 1), Count(Number(s, "scans")),
          Fixed(Number(s, "data_duration_s"), 0), Fixed(Number(s, "wall_time_s"), 0),
@@ -177,11 +187,11 @@ void AppendReplay(const std::vector<RunData>& runs, std::ostringstream& out) {
          Count(Number(s, "slam/submaps")), Count(Number(s, "slam/loop_closures")),
          Count(Number(s, "reference/matched_scans")), Fixed(Number(s, "reference/ate_rmse_m"), 3),
          pair("reference/rpe_1s_trans_m", "reference/rpe_1s_rot_deg"),
-         pair("reference/rpe_10s_trans_m", "reference/rpe_10s_rot_deg")});
+         pair("reference/rpe_10s_trans_m", "reference/rpe_10s_rot_deg"), consistency()});
   }
   AppendTable({"run", "dataset", "odom noise", "scans", "data s", "wall s", "× real time",
                "peak RSS MiB", "submaps", "loop closures", "matched scans", "ATE RMSE m",
-               "RPE 1 s m / °", "RPE 10 s m / °"},
+               "RPE 1 s m / °", "RPE 10 s m / °", "scan consistency mm (reference)"},
               rows, out);
   AppendStrategyTable(runs, /*with_epsilon=*/false, out);
 }
