@@ -90,6 +90,7 @@ void ReadPoseGraph(YamlSection s, slam::PoseGraphOptions* o) {
     c.ReadNonNegative("max_sample_spacing_m", &b.max_sample_spacing_m);
     c.ReadPositive("max_constraint_distance_m", &b.max_constraint_distance_m);
     c.ReadPositive("min_score", &b.min_score);
+    c.ReadNonNegative("min_score_fraction_of_own_scans", &b.min_score_fraction_of_own_scans);
     c.ReadNonNegative("min_overlap", &b.min_overlap);
     c.ReadNonNegative("min_search_window_m", &b.min_search_window_m);
     c.ReadNonNegative("search_window_per_travel", &b.search_window_per_travel);

@@ -32,6 +32,20 @@ void RequireFraction(const char* key, double value) {
 
 }  // namespace
 
+double MatchScore(const grid::ProbabilityGrid& grid, const geometry::Rigid2d& pose,
+                  const PointCloud& points) {
+  if (points.empty()) return 0.0;
+  const grid::MapLimits& limits = grid.limits();
+  double sum = 0.0;
+  for (const Eigen::Vector2d& p : points) {
+    const grid::CellIndex cell = limits.CellContaining(pose * p);
+    const uint16_t value =
+        limits.Contains(cell) ? grid.value(cell) & grid::kMaxValue : grid::kUnknownValue;
+    sum += value == grid::kUnknownValue ? grid::kMinProbability : grid::ValueToProbability(value);
+  }
+  return sum / static_cast<double>(points.size());
+}
+
 double ObservedFraction(const grid::ProbabilityGrid& grid, const geometry::Rigid2d& pose,
                         const PointCloud& points) {
   if (points.empty()) return 0.0;
@@ -78,6 +92,7 @@ void Validate(const ConstraintBuilderOptions& options) {
   }
   RequirePositive("max_constraint_distance_m", options.max_constraint_distance_m);
   RequireFraction("min_score", options.min_score);
+  RequireFraction("min_score_fraction_of_own_scans", options.min_score_fraction_of_own_scans);
   RequireFraction("min_overlap", options.min_overlap);
   RequireFraction("max_see_through", options.max_see_through);
   if (!(options.see_through_slack_m >= 0.0 && std::isfinite(options.see_through_slack_m))) {
@@ -133,14 +148,35 @@ ConstraintBuilder::ConstraintBuilder(const ConstraintBuilderOptions& options)
     : options_(options), ceres_scan_matcher_((Validate(options), options.ceres_scan_matcher)) {}
 
 void ConstraintBuilder::AddFinishedSubmap(int submap_id,
-                                          std::shared_ptr<const grid::ProbabilityGrid> grid) {
+                                          std::shared_ptr<const grid::ProbabilityGrid> grid,
+                                          const std::vector<SubmapScan>& own_scans) {
   if (submaps_.count(submap_id) > 0) return;  // a finished grid never changes
+  double min_score = options_.min_score;
+  if (options_.min_score_fraction_of_own_scans > 0.0) {
+    // Weighted by points: scans without returns (inserted for their free
+    // space) say nothing about the submap's walls.
+    double sum = 0.0;
+    size_t num_points = 0;
+    for (const SubmapScan& scan : own_scans) {
+      sum += MatchScore(*grid, scan.pose_in_submap, *scan.points) * scan.points->size();
+      num_points += scan.points->size();
+    }
+    if (num_points > 0) {
+      const double own_score = sum / static_cast<double>(num_points);
+      min_score = std::min(min_score, options_.min_score_fraction_of_own_scans * own_score);
+    }
+  }
   // The matcher shares the grid (its finest level) rather than copying it.
   auto matcher =
       std::make_unique<FastCorrelativeScanMatcher>(grid, options_.fast_correlative_scan_matcher);
-  submaps_.emplace(submap_id,
-                   SubmapMatcher{std::move(grid), std::move(matcher),
-                                 FixedRatioSampler(options_.sampling_ratio), std::nullopt});
+  submaps_.emplace(submap_id, SubmapMatcher{std::move(grid), std::move(matcher),
+                                            FixedRatioSampler(options_.sampling_ratio),
+                                            std::nullopt, min_score});
+}
+
+double ConstraintBuilder::MinScore(int submap_id) const {
+  const auto it = submaps_.find(submap_id);
+  return it == submaps_.end() ? options_.min_score : it->second.min_score;
 }
 
 double ConstraintBuilder::SearchWindow(double travel_m) const {
@@ -192,7 +228,7 @@ std::optional<Constraint> ConstraintBuilder::Search(int submap_id, int node_id,
   }
   ++num_searches_;
   const std::optional<ScanMatchResult> match =
-      it->second.matcher->Match(initial_relative_pose, points, options_.min_score,
+      it->second.matcher->Match(initial_relative_pose, points, it->second.min_score,
                                 SearchWindow(travel_m), AngularSearchWindow(travel_m));
   if (!match) return std::nullopt;
   // Branch and bound is only cell- and step-accurate; refine on the grid

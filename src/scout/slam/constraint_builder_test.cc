@@ -181,6 +181,56 @@ TEST(ConstraintBuilderTest, SearchWindowGrowsWithTheTrajectoryBetween) {
               options.fast_correlative_scan_matcher.angular_search_window_rad, 1e-12);
 }
 
+// A submap built from three scans a metre apart holds walls hit once or twice
+// (p 0.55 to 0.6): its own scans score about 0.6 in it, and a true match of
+// a fourth scan scores below min_score. Relative to its own scans it is
+// found; a submap of 36 scans keeps min_score.
+TEST(ConstraintBuilderTest, ThinSubmapsAcceptMatchesRelativeToTheirOwnScans) {
+  const SubmapScene dense;
+  const std::vector<Rigid2d> thin_poses = {{-8.5, -4.5, 0.0}, {-7.0, -4.4, 0.05}};
+  const auto thin_grid = std::make_shared<const grid::ProbabilityGrid>(
+      global_testing::BuildGrid(dense.walls, dense.submap_frame, thin_poses));
+  std::vector<SubmapScan> own_scans;
+  for (const Rigid2d& pose : thin_poses) {
+    own_scans.push_back(
+        {dense.submap_frame.inverse() * pose,
+         std::make_shared<const PointCloud>(global_testing::ScanReturns(dense.walls, pose))});
+  }
+  double own_score = 0.0;
+  size_t own_points = 0;
+  for (const SubmapScan& scan : own_scans) {
+    own_score += MatchScore(*thin_grid, scan.pose_in_submap, *scan.points) * scan.points->size();
+    own_points += scan.points->size();
+  }
+  own_score /= static_cast<double>(own_points);
+  EXPECT_LT(own_score, 0.65);
+
+  ConstraintBuilderOptions options;
+  options.min_score_fraction_of_own_scans = 0.8;
+  ConstraintBuilder relative(options);
+  relative.AddFinishedSubmap(0, thin_grid, own_scans);
+  relative.AddFinishedSubmap(1, dense.grid, own_scans);
+  EXPECT_NEAR(relative.MinScore(0), 0.8 * own_score, 1e-9);
+  EXPECT_EQ(relative.MinScore(1), options.min_score);
+  ConstraintBuilderOptions fixed_options;
+  fixed_options.min_score_fraction_of_own_scans = 0.0;
+  ConstraintBuilder fixed(fixed_options);
+  fixed.AddFinishedSubmap(0, thin_grid, own_scans);
+  EXPECT_EQ(fixed.MinScore(0), 0.55);
+
+  const Rigid2d node_world(-6.0, -4.6, 0.1);
+  const Rigid2d truth = dense.submap_frame.inverse() * node_world;
+  const PointCloud points = global_testing::ScanReturns(dense.walls, node_world);
+  const double true_score = MatchScore(*thin_grid, truth, points);
+  EXPECT_LT(true_score, 0.55) << own_score;
+  EXPECT_GT(true_score, relative.MinScore(0));
+  const Rigid2d estimate = truth * Rigid2d(0.3, -0.2, 0.05);
+  EXPECT_FALSE(fixed.Search(0, 9, estimate, points, 10.0).has_value());
+  const std::optional<Constraint> found = relative.Search(0, 9, estimate, points, 10.0);
+  ASSERT_TRUE(found.has_value());
+  EXPECT_LT((found->relative_pose.translation() - truth.translation()).norm(), 0.05);
+}
+
 TEST(ConstraintBuilderTest, FixedRatioSamplerIsDeterministic) {
   FixedRatioSampler a(0.3), b(0.3);
   for (int i = 0; i < 50; ++i) EXPECT_EQ(a.Pulse(), b.Pulse());
@@ -194,6 +244,9 @@ TEST(ConstraintBuilderTest, RejectsBadOptionsAndUnknownSubmaps) {
   EXPECT_THROW(ConstraintBuilder{options}, std::invalid_argument);
   options = {};
   options.min_score = 1.5;
+  EXPECT_THROW(ConstraintBuilder{options}, std::invalid_argument);
+  options = {};
+  options.min_score_fraction_of_own_scans = -0.1;
   EXPECT_THROW(ConstraintBuilder{options}, std::invalid_argument);
   options = {};
   options.fast_correlative_scan_matcher.branch_and_bound_depth = 0;

@@ -177,10 +177,16 @@ void PoseGraph::ComputeConstraints(int node_id, const std::vector<int>& newly_fi
   for (int submap_id : newly_finished) {
     std::shared_ptr<const grid::ProbabilityGrid> grid;
     std::vector<int> candidates;
+    std::vector<SubmapScan> own_scans;
     {
       std::lock_guard<std::mutex> lock(mutex_);
-      grid = submaps_[submap_id].state.grid;
-      const std::vector<int>& members = submaps_[submap_id].node_ids;
+      const Submap& submap = submaps_[submap_id];
+      grid = submap.state.grid;
+      const std::vector<int>& members = submap.node_ids;
+      for (int member : members) {
+        own_scans.push_back({submap.state.local_pose.inverse() * nodes_[member].data.local_pose,
+                             nodes_[member].points});
+      }
       for (int other = 0; other <= node_id; ++other) {
         const std::vector<int>& other_submaps = nodes_[other].submap_ids;
         if (!Contains(members, other) && !IsNeighbour(other_submaps, submap_id)) {
@@ -188,7 +194,7 @@ void PoseGraph::ComputeConstraints(int node_id, const std::vector<int>& newly_fi
         }
       }
     }
-    constraint_builder_.AddFinishedSubmap(submap_id, std::move(grid));
+    constraint_builder_.AddFinishedSubmap(submap_id, std::move(grid), own_scans);
     pairs.clear();
     for (int other : candidates) pairs.emplace_back(other, submap_id);
     SearchPairs(pairs);
