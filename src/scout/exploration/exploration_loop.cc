@@ -55,7 +55,8 @@ ExplorationLoop::ExplorationLoop(const sim::World& world, const ExplorationOptio
              options_.explore.follower,
              explore::MakeGoalPolicy(options_.explore.goal_policy, options_.explore.policy)),
       world_from_map_(robot_.true_pose()),
-      fusion_(options_.slam.local.submaps.resolution_m) {
+      fusion_(options_.slam.local.submaps.resolution_m),
+      map_progress_(options_.explore.min_map_gain_m2) {
   // Local SLAM's frame starts at the first scan's pose, which is the start.
   builder_ = std::make_unique<slam::MapBuilder>(options_.slam, [this](events::SubmapEvent event) {
     const frontier::Stopwatch watch;
@@ -200,10 +201,7 @@ void ExplorationLoop::MeasureCoverage(const std::vector<slam::TimedPose>& nodes)
       std::count(fused_map_.cells.begin(), fused_map_.cells.end(), grid::CellState::kFree);
   const double cell_m = fused_map_.limits.resolution();
   result_.map_free_m2 = static_cast<double>(free_cells) * cell_m * cell_m;
-  if (result_.map_free_m2 >= best_map_free_m2_ + options_.explore.min_map_gain_m2) {
-    best_map_free_m2_ = result_.map_free_m2;
-    last_gain_s_ = t;
-  }
+  map_progress_.Measure(t, result_.map_free_m2, builder_->GetStats().num_optimizations);
 }
 
 void ExplorationLoop::CompleteCoverage() {
@@ -305,7 +303,9 @@ std::optional<Termination> ExplorationLoop::CheckTermination(
                : Termination::kComplete;
   }
   if (t >= options_.explore.max_sim_time_s) return Termination::kMaxSimTime;
-  if (t - last_gain_s_ >= options_.explore.no_progress_timeout_s) return Termination::kNoProgress;
+  if (t - map_progress_.last_progress_s() >= options_.explore.no_progress_timeout_s) {
+    return Termination::kNoProgress;
+  }
   return std::nullopt;
 }
 

@@ -13,6 +13,7 @@
 
 #include "scout/exploration/exploration_options.h"
 #include "scout/exploration/ground_truth.h"
+#include "scout/exploration/map_progress.h"
 #include "scout/explore/goal_manager.h"
 #include "scout/frontier/frontier_engine.h"
 #include "scout/grid/incremental_fusion.h"
@@ -219,8 +220,7 @@ class ExplorationLoop {
 
   ScanRecorder scan_recorder_;
   ExplorationResult result_;
-  double best_map_free_m2_ = 0.0;
-  double last_gain_s_ = 0.0;
+  MapProgress map_progress_;
 
   // The coverage measurement in flight. Declared last: destroyed (joined)
   // first, while the ground truth it reads still exists.
