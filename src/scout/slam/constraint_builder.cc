@@ -152,7 +152,9 @@ void ConstraintBuilder::AddFinishedSubmap(int submap_id,
                                           const std::vector<SubmapScan>& own_scans) {
   if (submaps_.count(submap_id) > 0) return;  // a finished grid never changes
   double min_score = options_.min_score;
-  if (options_.min_score_fraction_of_own_scans > 0.0) {
+  FastCorrelativeScanMatcherOptions matcher_options = options_.fast_correlative_scan_matcher;
+  const double fraction = options_.min_score_fraction_of_own_scans;
+  if (fraction > 0.0) {
     // Weighted by points: scans without returns (inserted for their free
     // space) say nothing about the submap's walls.
     double sum = 0.0;
@@ -161,14 +163,19 @@ void ConstraintBuilder::AddFinishedSubmap(int submap_id,
       sum += MatchScore(*grid, scan.pose_in_submap, *scan.points) * scan.points->size();
       num_points += scan.points->size();
     }
-    if (num_points > 0) {
+    const double full_contrast_score = options_.min_score / fraction;
+    if (num_points > 0 && full_contrast_score > 0.5) {
       const double own_score = sum / static_cast<double>(num_points);
-      min_score = std::min(min_score, options_.min_score_fraction_of_own_scans * own_score);
+      min_score = std::min(min_score, fraction * own_score);
+      // Its walls stand out from the 0.5 of an undecided cell by this share
+      // of a submap that keeps min_score: score differences between a
+      // match and its rivals shrink alike.
+      const double contrast = std::clamp((own_score - 0.5) / (full_contrast_score - 0.5), 0.0, 1.0);
+      matcher_options.ambiguity_score_margin *= contrast;
     }
   }
   // The matcher shares the grid (its finest level) rather than copying it.
-  auto matcher =
-      std::make_unique<FastCorrelativeScanMatcher>(grid, options_.fast_correlative_scan_matcher);
+  auto matcher = std::make_unique<FastCorrelativeScanMatcher>(grid, matcher_options);
   submaps_.emplace(submap_id, SubmapMatcher{std::move(grid), std::move(matcher),
                                             FixedRatioSampler(options_.sampling_ratio),
                                             std::nullopt, min_score});
@@ -177,6 +184,12 @@ void ConstraintBuilder::AddFinishedSubmap(int submap_id,
 double ConstraintBuilder::MinScore(int submap_id) const {
   const auto it = submaps_.find(submap_id);
   return it == submaps_.end() ? options_.min_score : it->second.min_score;
+}
+
+double ConstraintBuilder::AmbiguityScoreMargin(int submap_id) const {
+  const auto it = submaps_.find(submap_id);
+  return it == submaps_.end() ? options_.fast_correlative_scan_matcher.ambiguity_score_margin
+                              : it->second.matcher->options().ambiguity_score_margin;
 }
 
 double ConstraintBuilder::SearchWindow(double travel_m) const {

@@ -45,7 +45,11 @@ struct ConstraintBuilderOptions {
   // scans score min_score / f (0.69) or more are unchanged. Radish logs with
   // injected odometry noise, seeds 1-3: fhw ATE 0.32 / 0.44 / 0.27 m ->
   // 0.22 / 0.25 / 0.27 m, csail seed 3 0.23 -> 0.20 m, the others within
-  // 0.01 m. 0 = min_score everywhere.
+  // 0.01 m. The ambiguity margin of such a submap shrinks by its contrast,
+  // (own score - 0.5) / (min_score / f - 0.5): a match and its rivals differ
+  // less where walls stand out less from undecided cells (then csail seed 2
+  // 0.76 -> 0.50 m, orebro seed 2 0.33 -> 0.15 m, the others within 0.03 m).
+  // 0 = min_score and the margin everywhere.
   double min_score_fraction_of_own_scans = 0.8;
   // Overlap gate: a pair is searched only if at least this fraction of the
   // node's points, placed at the current estimate, falls on cells the submap
@@ -138,9 +142,10 @@ class ConstraintBuilder {
   // (min_score_fraction_of_own_scans); without them it is min_score.
   void AddFinishedSubmap(int submap_id, std::shared_ptr<const grid::ProbabilityGrid> grid,
                          const std::vector<SubmapScan>& own_scans = {});
-  // The score a match in submap 'submap_id' must reach (min_score before the
-  // submap was added).
+  // The score a match in submap 'submap_id' must reach, and the margin of its
+  // ambiguity test (the options' before the submap was added).
   double MinScore(int submap_id) const;
+  double AmbiguityScoreMargin(int submap_id) const;
   bool HasSubmap(int submap_id) const { return submaps_.count(submap_id) > 0; }
 
   // Returns true if the pair (node, 'submap_id') should be searched: the

@@ -184,7 +184,7 @@ TEST(ConstraintBuilderTest, SearchWindowGrowsWithTheTrajectoryBetween) {
 // A submap built from three scans a metre apart holds walls hit once or twice
 // (p 0.55 to 0.6): its own scans score about 0.6 in it, and a true match of
 // a fourth scan scores below min_score. Relative to its own scans it is
-// found; a submap of 36 scans keeps min_score.
+// found; a submap of 36 scans keeps min_score and the ambiguity margin.
 TEST(ConstraintBuilderTest, ThinSubmapsAcceptMatchesRelativeToTheirOwnScans) {
   const SubmapScene dense;
   const std::vector<Rigid2d> thin_poses = {{-8.5, -4.5, 0.0}, {-7.0, -4.4, 0.05}};
@@ -212,11 +212,16 @@ TEST(ConstraintBuilderTest, ThinSubmapsAcceptMatchesRelativeToTheirOwnScans) {
   relative.AddFinishedSubmap(1, dense.grid, own_scans);
   EXPECT_NEAR(relative.MinScore(0), 0.8 * own_score, 1e-9);
   EXPECT_EQ(relative.MinScore(1), options.min_score);
+  // Its ambiguity margin shrinks by how far its walls stand out from 0.5.
+  EXPECT_NEAR(relative.AmbiguityScoreMargin(0), 0.05 * (own_score - 0.5) / (0.55 / 0.8 - 0.5),
+              1e-9);
+  EXPECT_EQ(relative.AmbiguityScoreMargin(1), 0.05);
   ConstraintBuilderOptions fixed_options;
   fixed_options.min_score_fraction_of_own_scans = 0.0;
   ConstraintBuilder fixed(fixed_options);
   fixed.AddFinishedSubmap(0, thin_grid, own_scans);
   EXPECT_EQ(fixed.MinScore(0), 0.55);
+  EXPECT_EQ(fixed.AmbiguityScoreMargin(0), 0.05);
 
   const Rigid2d node_world(-6.0, -4.6, 0.1);
   const Rigid2d truth = dense.submap_frame.inverse() * node_world;

@@ -76,6 +76,7 @@ class FastCorrelativeScanMatcher {
   std::optional<ScanMatchResult> MatchFullSubmap(const PointCloud& points, double min_score) const;
 
   const grid::MapLimits& limits() const { return limits_; }
+  const FastCorrelativeScanMatcherOptions& options() const { return options_; }
 
  private:
   // Level d holds, for every cell c, the max raw value over the cells
