@@ -118,7 +118,10 @@ slam::SlamOptions EffectiveSlamOptions(const ExplorationOptions& options) {
   slam.local.use_online_correlative_scan_matching = l.use_online_correlative_scan_matching;
   slam.local.ceres_scan_matcher.translation_weight = l.translation_weight;
   slam.local.ceres_scan_matcher.rotation_weight = l.rotation_weight;
-  if (options.explore.synchronous_slam) slam.pose_graph.synchronous = true;
+  if (options.explore.synchronous_slam) {
+    slam.pose_graph.synchronous = true;
+    slam.pose_graph.synchronous_solve_delay_nodes = options.explore.solve_delay_nodes;
+  }
   return slam;
 }
 

@@ -57,6 +57,11 @@ struct ExploreOptions {
   // Run global SLAM in the loop's thread: the run is then a deterministic
   // function of world, options and seed. Overrides slam.pose_graph.synchronous.
   bool synchronous_slam = true;
+  // With synchronous_slam: a pose-graph solve runs on a second thread while
+  // the loop adds this many more nodes, and its result is applied before the
+  // next (slam.pose_graph.synchronous_solve_delay_nodes; still deterministic).
+  // 0 applies it at once.
+  int solve_delay_nodes = 10;
 
   // Local SLAM settings that replace slam.local's for the simulated robot.
   // slam.local is tuned for recorded logs with poor odometry (fr079: online

@@ -116,6 +116,7 @@ void ReadExploreOptions(YamlSection s, exploration::ExploreOptions* o) {
   o->initial_turn_rad = turn_deg * kRadPerDeg;
   s.ReadBool("evaluate_frontier", &o->evaluate_frontier);
   s.ReadBool("synchronous_slam", &o->synchronous_slam);
+  s.ReadInt("solve_delay_nodes", &o->solve_delay_nodes, 0);
   {
     YamlSection l = s.Section("local_slam");
     l.ReadBool("use_online_correlative_scan_matching",

@@ -76,6 +76,7 @@ void ReadPoseGraph(YamlSection s, slam::PoseGraphOptions* o) {
   s.ReadInt("optimize_every_n_nodes", &o->optimize_every_n_nodes, 0);
   s.ReadNonNegative("optimize_every_travel_m", &o->optimize_every_travel_m);
   s.ReadBool("synchronous", &o->synchronous);
+  s.ReadInt("synchronous_solve_delay_nodes", &o->synchronous_solve_delay_nodes, 0);
   s.ReadNonNegative("intra_submap_translation_weight", &o->intra_submap_translation_weight);
   s.ReadNonNegative("intra_submap_rotation_weight", &o->intra_submap_rotation_weight);
   ReadAdaptiveVoxelFilter(s.Section("loop_closure_voxel_filter"), &o->loop_closure_voxel_filter);

@@ -46,6 +46,11 @@ void Validate(const PoseGraphOptions& options) {
         "pose_graph option 'optimize_every_travel_m': expected a finite value >= 0, got " +
         std::to_string(options.optimize_every_travel_m));
   }
+  if (options.synchronous_solve_delay_nodes < 0) {
+    throw std::invalid_argument(
+        "pose_graph option 'synchronous_solve_delay_nodes': expected >= 0, got " +
+        std::to_string(options.synchronous_solve_delay_nodes));
+  }
   if (options.skip_neighbour_submaps < 0) {
     throw std::invalid_argument("pose_graph option 'skip_neighbour_submaps': expected >= 0, got " +
                                 std::to_string(options.skip_neighbour_submaps));
@@ -75,6 +80,14 @@ PoseGraph::~PoseGraph() = default;
 int PoseGraph::AddNode(double time_s, const geometry::Rigid2d& local_pose, const PointCloud& points,
                        const std::vector<InsertedSubmap>& insertion_submaps,
                        std::optional<geometry::Rigid2d> odometry_pose) {
+  if (pending_solve_) {
+    int next_node_id = 0;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      next_node_id = static_cast<int>(nodes_.size());
+    }
+    ApplyPendingSolve(/*force=*/false, next_node_id);
+  }
   auto thinned = std::make_shared<const PointCloud>(
       AdaptiveVoxelFilter(points, options_.loop_closure_voxel_filter));
   int node_id = 0;
@@ -145,8 +158,12 @@ int PoseGraph::AddNode(double time_s, const geometry::Rigid2d& local_pose, const
   work_queue_.Schedule(
       [this, node_id, newly_finished] { ComputeConstraints(node_id, newly_finished); });
   if (optimize) {
-    work_queue_.Schedule(
-        [this, prefix_nodes, prefix_submaps] { Optimize(prefix_nodes, prefix_submaps); });
+    if (options_.synchronous && options_.synchronous_solve_delay_nodes > 0) {
+      StartSolve(prefix_nodes, prefix_submaps, node_id);
+    } else {
+      work_queue_.Schedule(
+          [this, prefix_nodes, prefix_submaps] { Optimize(prefix_nodes, prefix_submaps); });
+    }
   }
   return node_id;
 }
@@ -262,31 +279,42 @@ void PoseGraph::SearchPairs(const std::vector<std::pair<int, int>>& pairs) {
 
 void PoseGraph::Optimize(int num_nodes, int num_submaps) {
   if (num_nodes == 0 || num_submaps == 0) return;
-  std::vector<OptimizationNode> nodes;
-  std::vector<geometry::Rigid2d> submap_poses;
-  std::vector<Constraint> constraints;
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    nodes.reserve(num_nodes);
-    for (int i = 0; i < num_nodes; ++i) nodes.push_back(nodes_[i].data);
-    for (int i = 0; i < num_submaps; ++i) submap_poses.push_back(submaps_[i].state.global_pose);
-    for (const Constraint& c : constraints_) {
-      if (c.node_id < num_nodes && c.submap_id < num_submaps) constraints.push_back(c);
-    }
+  ApplySolve(num_nodes, num_submaps, Solve(SnapshotForSolve(num_nodes, num_submaps)));
+}
+
+PoseGraph::SolveInput PoseGraph::SnapshotForSolve(int num_nodes, int num_submaps) const {
+  SolveInput input;
+  input.num_nodes = num_nodes;
+  input.num_submaps = num_submaps;
+  std::lock_guard<std::mutex> lock(mutex_);
+  input.nodes.reserve(num_nodes);
+  for (int i = 0; i < num_nodes; ++i) input.nodes.push_back(nodes_[i].data);
+  for (int i = 0; i < num_submaps; ++i) input.submap_poses.push_back(submaps_[i].state.global_pose);
+  for (const Constraint& c : constraints_) {
+    if (c.node_id < num_nodes && c.submap_id < num_submaps) input.constraints.push_back(c);
   }
-  // Solved without the lock: AddNode keeps running meanwhile.
-  OptimizationResult result = optimization_problem_.Solve(nodes, submap_poses, constraints);
-  std::vector<Constraint> rejected;
+  return input;
+}
+
+PoseGraph::SolveOutput PoseGraph::Solve(SolveInput input) const {
+  SolveOutput output;
+  std::vector<Constraint>& constraints = input.constraints;
+  output.result = optimization_problem_.Solve(input.nodes, input.submap_poses, constraints);
   for (int round = 0; round < options_.max_outlier_rounds; ++round) {
     const std::vector<size_t> outliers =
-        LoopClosureOutliers(result, constraints, options_.outlier_translation_m,
+        LoopClosureOutliers(output.result, constraints, options_.outlier_translation_m,
                             options_.outlier_rotation_deg * M_PI / 180.0);
     if (outliers.empty()) break;
-    for (size_t i : outliers) rejected.push_back(constraints[i]);
-    std::erase_if(constraints, [&](const Constraint& c) { return Contains(rejected, c); });
-    result = optimization_problem_.Solve(nodes, submap_poses, constraints);
+    for (size_t i : outliers) output.rejected.push_back(constraints[i]);
+    std::erase_if(constraints, [&](const Constraint& c) { return Contains(output.rejected, c); });
+    output.result = optimization_problem_.Solve(input.nodes, input.submap_poses, constraints);
   }
+  return output;
+}
 
+void PoseGraph::ApplySolve(int num_nodes, int num_submaps, const SolveOutput& output) {
+  const OptimizationResult& result = output.result;
+  const std::vector<Constraint>& rejected = output.rejected;
   std::vector<geometry::Rigid2d> all_submap_poses;
   {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -315,6 +343,27 @@ void PoseGraph::Optimize(int num_nodes, int num_submaps) {
   if (callback_) callback_(all_submap_poses);
 }
 
+void PoseGraph::StartSolve(int num_nodes, int num_submaps, int node_id) {
+  ApplyPendingSolve(/*force=*/true, node_id + 1);
+  if (num_nodes == 0 || num_submaps == 0) return;
+  PendingSolve pending;
+  pending.num_nodes = num_nodes;
+  pending.num_submaps = num_submaps;
+  pending.apply_before_node = node_id + 1 + options_.synchronous_solve_delay_nodes;
+  pending.output = std::async(std::launch::async,
+                              [this, input = SnapshotForSolve(num_nodes, num_submaps)]() mutable {
+                                return Solve(std::move(input));
+                              });
+  pending_solve_ = std::move(pending);
+}
+
+void PoseGraph::ApplyPendingSolve(bool force, int next_node_id) {
+  if (!pending_solve_ || (!force && next_node_id < pending_solve_->apply_before_node)) return;
+  PendingSolve pending = std::move(*pending_solve_);
+  pending_solve_.reset();
+  ApplySolve(pending.num_nodes, pending.num_submaps, pending.output.get());
+}
+
 void PoseGraph::RunFinalOptimization() {
   int num_nodes = 0, num_submaps = 0;
   {
@@ -324,11 +373,15 @@ void PoseGraph::RunFinalOptimization() {
     nodes_since_optimization_ = 0;
     if (!nodes_.empty()) travel_at_optimization_m_ = nodes_.back().travel_m;
   }
+  ApplyPendingSolve(/*force=*/true, num_nodes);
   work_queue_.Schedule([this, num_nodes, num_submaps] { Optimize(num_nodes, num_submaps); });
   work_queue_.WaitUntilIdle();
 }
 
-void PoseGraph::WaitForPendingWork() { work_queue_.WaitUntilIdle(); }
+void PoseGraph::WaitForPendingWork() {
+  work_queue_.WaitUntilIdle();
+  if (pending_solve_) ApplyPendingSolve(/*force=*/true, 0);
+}
 
 std::vector<TimedPose> PoseGraph::GetNodePoses() const {
   std::lock_guard<std::mutex> lock(mutex_);

@@ -2,6 +2,7 @@
 #define SCOUT_SLAM_POSE_GRAPH_H_
 
 #include <functional>
+#include <future>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -29,6 +30,14 @@ struct PoseGraphOptions {
   // Run constraint search and solves in the calling thread, in a fixed order
   // (tests, lockstep evaluation). Otherwise one background thread does them.
   bool synchronous = false;
+  // Synchronous mode only: a solve runs on a second thread while this many
+  // more nodes are added, and its result is applied just before the node
+  // after them (or before the next solve or the final optimisation, when
+  // sooner). Results stay deterministic, applied at fixed nodes, but the
+  // solve overlaps the caller's work. Until then the graph and searches see
+  // the poses of the solve before. 0: applied at once, as in background mode
+  // with an idle worker.
+  int synchronous_solve_delay_nodes = 0;
   // Weights of the node-to-insertion-submap constraints. Far below the loop
   // closure weights: they encode local SLAM's drift-prone placement.
   double intra_submap_translation_weight = 5e2;
@@ -145,6 +154,26 @@ class PoseGraph {
     std::vector<int> node_ids;  // nodes inserted into it
   };
 
+  // A solve's inputs, copied from the graph of the first 'num_nodes' nodes
+  // and 'num_submaps' submaps, and its outcome.
+  struct SolveInput {
+    int num_nodes = 0;
+    int num_submaps = 0;
+    std::vector<OptimizationNode> nodes;
+    std::vector<geometry::Rigid2d> submap_poses;
+    std::vector<Constraint> constraints;
+  };
+  struct SolveOutput {
+    OptimizationResult result;
+    std::vector<Constraint> rejected;  // loop closures dropped as outliers
+  };
+  struct PendingSolve {
+    int num_nodes = 0;
+    int num_submaps = 0;
+    int apply_before_node = 0;  // node id
+    std::future<SolveOutput> output;
+  };
+
   // Background steps, run in scheduling order by work_queue_.
   void ComputeConstraints(int node_id, const std::vector<int>& newly_finished);
   // Searches the (node id, submap id) 'pairs' the constraint builder
@@ -155,6 +184,14 @@ class PoseGraph {
   // True if 'submap_id' is a trajectory neighbour of a submap in 'node_submaps'.
   bool IsNeighbour(const std::vector<int>& node_submaps, int submap_id) const;
   void Optimize(int num_nodes, int num_submaps);
+  SolveInput SnapshotForSolve(int num_nodes, int num_submaps) const;
+  // Pure: reads only 'input' and the (stateless) optimisation problem.
+  SolveOutput Solve(SolveInput input) const;
+  void ApplySolve(int num_nodes, int num_submaps, const SolveOutput& output);
+  // Synchronous mode with a solve delay: starts a solve on a second thread,
+  // and applies a started one (waiting for it) when 'force' or its node came.
+  void StartSolve(int num_nodes, int num_submaps, int node_id);
+  void ApplyPendingSolve(bool force, int next_node_id);
 
   const PoseGraphOptions options_;
   const OptimizationCallback callback_;
@@ -169,6 +206,8 @@ class PoseGraph {
   int nodes_since_optimization_ = 0;
   double travel_at_optimization_m_ = 0.0;  // node travel when the last solve was scheduled
   PoseGraphStats stats_;
+  // Only touched by the thread calling AddNode (synchronous mode).
+  std::optional<PendingSolve> pending_solve_;
 
   // Declared last: destroyed first, so queued steps never see dead members.
   WorkQueue work_queue_;

@@ -217,6 +217,55 @@ TEST(PoseGraphTest, BackgroundModeMatchesSynchronousMode) {
   EXPECT_EQ(background.optimized.back().size(), sync.optimized.back().size());
 }
 
+// A solve delayed by 10 nodes runs beside the caller, and its result is
+// applied before node 90 + 10 + 1, never earlier or later: runs repeat bit
+// for bit, and the loop closes as well as with the solve applied at once.
+TEST(PoseGraphTest, DelayedSynchronousSolvesApplyAtAFixedNode) {
+  PoseGraphOptions delayed = Synchronous();
+  delayed.optimize_every_travel_m = 0.0;  // one solve at node 90, then the final one
+  delayed.synchronous_solve_delay_nodes = 10;
+  const auto& run = DriveRun();
+  std::vector<int> solves_seen_at;  // nodes added when each callback came
+  int added = 0;
+  PoseGraph graph(delayed, [&](const std::vector<Rigid2d>&) { solves_seen_at.push_back(added); });
+  std::vector<Rigid2d> before_apply;
+  for (const NodeInput& n : run) {
+    graph.AddNode(n.time_s, n.local_pose, n.points, n.submaps);
+    ++added;
+    if (added == 100) {
+      for (const TimedPose& p : graph.GetNodePoses()) before_apply.push_back(p.pose);
+    }
+  }
+  graph.RunFinalOptimization();
+  // Node 89 (the 90th) starts the solve; it is applied as node 100 is added.
+  ASSERT_EQ(solves_seen_at.size(), 2u);
+  EXPECT_EQ(solves_seen_at[0], 100);
+  EXPECT_EQ(graph.GetStats().num_optimizations, 2);
+  // Until then nodes keep local SLAM's poses (no correction yet).
+  for (int i = 0; i < 100; ++i) {
+    EXPECT_NEAR(before_apply[i].x(), run[i].local_pose.x(), 1e-9) << i;
+  }
+  std::vector<Rigid2d> global;
+  for (const TimedPose& p : graph.GetNodePoses()) global.push_back(p.pose);
+  std::vector<Rigid2d> immediate;
+  for (const TimedPose& p : Feed([] {
+                              PoseGraphOptions o = Synchronous();
+                              o.optimize_every_travel_m = 0.0;
+                              return o;
+                            }())
+                                .nodes) {
+    immediate.push_back(p.pose);
+  }
+  EXPECT_LT(RmsError(global, run), 1.2 * RmsError(immediate, run) + 0.01);
+  // Deterministic.
+  const Outcome again = Feed(delayed);
+  ASSERT_EQ(again.nodes.size(), global.size());
+  for (size_t i = 0; i < global.size(); ++i) {
+    EXPECT_EQ(again.nodes[i].pose.x(), global[i].x());
+    EXPECT_EQ(again.nodes[i].pose.theta(), global[i].theta());
+  }
+}
+
 TEST(PoseGraphTest, NodesAddedAfterASolveFollowTheCorrection) {
   PoseGraphOptions options = Synchronous();
   options.optimize_every_n_nodes = 0;  // solve only on request
