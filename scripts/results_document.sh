@@ -77,6 +77,21 @@ stale_frontier_runs() {
   return 0
 }
 
+# 6c5133f: loop closures in thin submaps judged against their own scans (f236b19, then the
+# ambiguity margin), which changes the Radish replays' SLAM; 560cef9 added the consistency
+# measure. A replay run older than it is redone.
+REPLAY_SLAM_COMMIT=6c5133f
+stale_replay_runs() {
+  local since name f
+  since=$(git log -1 --format=%ct "$REPLAY_SLAM_COMMIT" 2>/dev/null) || return 0
+  for name in "$@"; do
+    f=$OUT/$name/summary.json
+    [[ -f $f ]] || continue
+    if (($(stat -c %Y "$f") < since)); then printf '`%s` ' "$name"; fi
+  done
+  return 0
+}
+
 # stale_note NAME...: a paragraph naming the frontier runs made before FRONTIER_EXACT_COMMIT.
 stale_note() {
   local stale
