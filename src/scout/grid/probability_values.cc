@@ -7,17 +7,8 @@
 namespace scout::grid {
 namespace {
 
-// The linear map is anchored at its midpoint, in double, with the exact decimal
-// bounds 0.1 / 0.9: then value 1, kMidValue and kMaxValue decode to exactly
-// kMinProbability, 0.5f and kMaxProbability, so "p == 0.5 is unknown" (ALGORITHMS §1)
-// is reachable and the clamps are hit exactly after repeated updates.
-constexpr double kMinProbabilityExact = 0.1;
-constexpr double kMaxProbabilityExact = 0.9;
-static_assert(static_cast<float>(kMinProbabilityExact) == kMinProbability);
-static_assert(static_cast<float>(kMaxProbabilityExact) == kMaxProbability);
-constexpr int kMidValue = (1 + kMaxValue) / 2;  // 16384 decodes to 0.5
-constexpr double kProbabilityPerValue =
-    (kMaxProbabilityExact - kMinProbabilityExact) / (kMaxValue - 1);
+using internal::kMidValue;
+using internal::kProbabilityPerValue;
 
 }  // namespace
 
@@ -29,13 +20,6 @@ uint16_t ProbabilityToValue(float p) {
                                  static_cast<double>(kMaxProbability));
   const long value = kMidValue + std::lround((clamped - 0.5) / kProbabilityPerValue);
   return static_cast<uint16_t>(std::clamp<long>(value, 1, kMaxValue));
-}
-
-float ValueToProbability(uint16_t value) {
-  // Tolerate a value that still carries the update marker.
-  const int v = value & kMaxValue;
-  if (v == kUnknownValue) return 0.5f;
-  return static_cast<float>(0.5 + (v - kMidValue) * kProbabilityPerValue);
 }
 
 std::vector<uint16_t> ComputeLookupTableToApplyOdds(float odds) {

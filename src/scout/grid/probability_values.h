@@ -15,10 +15,30 @@ inline constexpr uint16_t kUnknownValue = 0;
 inline constexpr uint16_t kMaxValue = 32767;
 inline constexpr uint16_t kUpdateMarker = 1u << 15;
 
+namespace internal {
+// The linear map is anchored at its midpoint, in double, with the exact decimal
+// bounds 0.1 / 0.9: then value 1, kMidValue and kMaxValue decode to exactly
+// kMinProbability, 0.5f and kMaxProbability, so "p == 0.5 is unknown" (ALGORITHMS §1)
+// is reachable and the clamps are hit exactly after repeated updates.
+inline constexpr double kMinProbabilityExact = 0.1;
+inline constexpr double kMaxProbabilityExact = 0.9;
+static_assert(static_cast<float>(kMinProbabilityExact) == kMinProbability);
+static_assert(static_cast<float>(kMaxProbabilityExact) == kMaxProbability);
+inline constexpr int kMidValue = (1 + kMaxValue) / 2;  // 16384 decodes to 0.5
+inline constexpr double kProbabilityPerValue =
+    (kMaxProbabilityExact - kMinProbabilityExact) / (kMaxValue - 1);
+}  // namespace internal
+
 // Returns the value for probability 'p', clamped to [kMinProbability, kMaxProbability].
 uint16_t ProbabilityToValue(float p);
 // Returns the probability of a known value (1..32767); 0.5 for kUnknownValue.
-float ValueToProbability(uint16_t value);
+// Inline: scan matching decodes sixteen cells per point and iteration.
+inline float ValueToProbability(uint16_t value) {
+  // Tolerate a value that still carries the update marker.
+  const int v = value & kMaxValue;
+  if (v == kUnknownValue) return 0.5f;
+  return static_cast<float>(0.5 + (v - internal::kMidValue) * internal::kProbabilityPerValue);
+}
 
 inline float Odds(float p) { return p / (1.f - p); }
 inline float ProbabilityFromOdds(float odds) { return odds / (1.f + odds); }

@@ -17,15 +17,25 @@ class GridSamples {
  public:
   enum { DATA_DIMENSION = 1 };
   GridSamples(const grid::ProbabilityGrid& grid, double unknown_probability)
-      : grid_(grid), unknown_probability_(unknown_probability) {}
+      : values_(grid.values().data()),
+        width_(grid.limits().width()),
+        height_(grid.limits().height()),
+        unknown_probability_(unknown_probability) {}
 
   void GetValue(int row, int column, double* probability) const {
-    const uint16_t v = grid_.value({column, row});
+    if (static_cast<unsigned>(column) >= static_cast<unsigned>(width_) ||
+        static_cast<unsigned>(row) >= static_cast<unsigned>(height_)) {
+      *probability = unknown_probability_;
+      return;
+    }
+    const uint16_t v = values_[static_cast<size_t>(row) * width_ + column] & grid::kMaxValue;
     *probability = v == grid::kUnknownValue ? unknown_probability_ : grid::ValueToProbability(v);
   }
 
  private:
-  const grid::ProbabilityGrid& grid_;
+  const uint16_t* values_;  // the grid's, row-major
+  const int width_;
+  const int height_;
   const double unknown_probability_;
 };
 
