@@ -99,8 +99,8 @@ TEST_F(ExploreCli, ExploresASmallMapAndWritesEveryOutput) {
   const Result r = RunScout("explore --quiet --seed 2 --world " + (dir_ / "rooms.yaml").string() +
                             " --out " + out.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  for (const char* name : {"map.yaml", "map.pgm", "map.png", "trajectory.tum", "truth.tum",
-                           "frontier.csv", "coverage.csv", "summary.json"}) {
+  for (const char* name : {"map.yaml", "map.pgm", "map.png", "coverage.png", "trajectory.tum",
+                           "truth.tum", "frontier.csv", "coverage.csv", "summary.json"}) {
     EXPECT_TRUE(fs::exists(out / name)) << name;
   }
   std::ifstream in(out / "summary.json");

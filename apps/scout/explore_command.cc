@@ -272,6 +272,7 @@ int RunExplore(const ExploreArgs& args) {
   io::WriteMapServerMap(submaps, out.Stage("map.yaml"));
   out.Stage("map.pgm");  // map_server's YAML names its image beside it
   io::WriteMapPicture(submaps, estimate, out.Stage("map.png"));
+  io::WriteCoveragePicture(loop.world().map, loop.CoverageMask(), truth, out.Stage("coverage.png"));
   io::WriteTumTrajectory(estimate, out.Stage("trajectory.tum"));
   io::WriteTumTrajectory(truth, out.Stage("truth.tum"));
   io::WriteFrontierCsv(loop.frontier_engine(), out.Stage("frontier.csv"));
@@ -294,8 +295,8 @@ int RunExplore(const ExploreArgs& args) {
             << result.reachable_frontier_left << " reachable, never visited; "
             << result.visited_frontier_left << " reachable near reached goals)\n"
             << "outputs: " << (out.path() / "summary.json").string()
-            << ", map.yaml, map.pgm, map.png, trajectory.tum, truth.tum, frontier.csv, "
-               "coverage.csv"
+            << ", map.yaml, map.pgm, map.png, coverage.png, trajectory.tum, truth.tum, "
+               "frontier.csv, coverage.csv"
             << (log ? ", sensor.log" : "") << "\n";
   return 0;
 }

@@ -204,6 +204,10 @@ void ExplorationLoop::MeasureCoverage(const std::vector<slam::TimedPose>& nodes)
   map_progress_.Measure(t, result_.map_free_m2, builder_->GetStats().num_optimizations);
 }
 
+std::vector<uint8_t> ExplorationLoop::CoverageMask() const {
+  return truth_.CoverageMask(fused_map_, CoverageAlignment(builder_->GetTrajectory()));
+}
+
 void ExplorationLoop::CompleteCoverage() {
   if (!pending_coverage_) return;
   PendingCoverage pending = std::move(*pending_coverage_);

@@ -159,6 +159,10 @@ class ExplorationLoop {
   const grid::OccupancyMap& fused_map() const { return fused_map_; }
   const geometry::Rigid2d& world_from_map() const { return world_from_map_; }
   const ExplorationOptions& options() const { return options_; }
+  // Per cell of ground_truth().limits(): what the final coverage counted
+  // (GroundTruth::CoverageMask of the latest fused map, placed as coverage
+  // places it).
+  std::vector<uint8_t> CoverageMask() const;
 
  private:
   // Feeds due sensor readings to SLAM and keeps the pose estimate current.

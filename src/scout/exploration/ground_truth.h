@@ -36,6 +36,11 @@ class GroundTruth {
   // Returns the reachable free area (m²) that 'map' shows as free, where
   // 'world_from_map' places the map in the world frame.
   double MappedFreeM2(const grid::OccupancyMap& map, const geometry::Rigid2d& world_from_map) const;
+  // What MappedFreeM2 counts, cell by cell on limits() (row-major):
+  // kNotReachable, kUnmapped (reachable, not free in 'map') or kMapped.
+  enum CoverageCell : uint8_t { kNotReachable = 0, kUnmapped = 1, kMapped = 2 };
+  std::vector<uint8_t> CoverageMask(const grid::OccupancyMap& map,
+                                    const geometry::Rigid2d& world_from_map) const;
 
   // True when the bare disc can drive from 'from' to within 'tolerance_m' of
   // 'goal' in the true world (world frame). Unknown space is not traversable.
@@ -51,6 +56,10 @@ class GroundTruth {
   // occupy (0: none). 4-connectivity equals the planner's 8-connected step
   // rule, which forbids cutting blocked corners.
   void LabelDiscComponents(const explore::PlanningMap& bare);
+  // Calls f(cell, mapped) for every reachable cell, in row-major order.
+  template <typename F>
+  void ForEachReachable(const grid::OccupancyMap& map, const geometry::Rigid2d& world_from_map,
+                        F&& f) const;
   // The constructor's work, on the world already walled in.
   GroundTruth(const grid::OccupancyMap& world, const std::string& world_name,
               const Eigen::Vector2d& start, const explore::TraversabilityOptions& traversability,

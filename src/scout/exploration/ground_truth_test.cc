@@ -56,6 +56,32 @@ TEST(GroundTruthTest, MappedAreaCountsOnlyFreeCellsWhereTheWorldIsFree) {
   EXPECT_LT(share, 0.6);
 }
 
+// The mask says cell by cell what MappedFreeM2 counts.
+TEST(GroundTruthTest, CoverageMaskMarksTheReachableCellsMappedOrNot) {
+  const sim::World w = testing::SmallBuilding();
+  const GroundTruth truth = Truth(w);
+  grid::OccupancyMap left = w.map;
+  std::fill(left.cells.begin(), left.cells.end(), CellState::kUnknown);
+  testing::Paint(left, 0.15, 0.15, 4.45, 6.15, CellState::kFree);
+  const std::vector<uint8_t> mask = truth.CoverageMask(left, geometry::Rigid2d());
+  const std::vector<uint8_t> reachable = truth.ReachableMask();
+  ASSERT_EQ(mask.size(), reachable.size());
+  int64_t mapped = 0;
+  for (size_t i = 0; i < mask.size(); ++i) {
+    EXPECT_EQ(mask[i] != GroundTruth::kNotReachable, reachable[i] != 0) << i;
+    mapped += mask[i] == GroundTruth::kMapped;
+  }
+  EXPECT_DOUBLE_EQ(mapped * 0.05 * 0.05, truth.MappedFreeM2(left, geometry::Rigid2d()));
+  const grid::MapLimits& l = w.map.limits;
+  EXPECT_EQ(mask[l.FlatIndex(l.CellContaining({2.0, 3.0}))], GroundTruth::kMapped);
+  EXPECT_EQ(mask[l.FlatIndex(l.CellContaining({6.5, 1.5}))], GroundTruth::kUnmapped);
+  // An empty map maps nothing.
+  const std::vector<uint8_t> none = truth.CoverageMask(grid::OccupancyMap(), geometry::Rigid2d());
+  EXPECT_EQ(std::count(none.begin(), none.end(), GroundTruth::kMapped), 0);
+  EXPECT_EQ(std::count(none.begin(), none.end(), GroundTruth::kUnmapped),
+            std::count(reachable.begin(), reachable.end(), 1));
+}
+
 // The row-wise stepping of MappedFreeM2 counts exactly what transforming every
 // reachable cell centre on its own counts, for maps of another resolution,
 // origin and rotation.

@@ -23,6 +23,12 @@ constexpr Rgb kEndColour = {255, 170, 0};
 constexpr Rgb kMarkOutline = {0, 0, 0};
 constexpr Rgb kPathStartColour = {20, 80, 255};
 constexpr Rgb kPathEndColour = {230, 40, 40};
+// The coverage picture's cells, by priority (an unmapped cell wins its block).
+constexpr Rgb kUnmappedColour = {235, 0, 200};
+constexpr Rgb kMappedColour = {255, 255, 255};
+constexpr Rgb kWallColour = {0, 0, 0};
+constexpr Rgb kUnreachableColour = {228, 228, 228};
+constexpr Rgb kUnknownColour = {kUnknownGrey, kUnknownGrey, kUnknownGrey};
 
 std::vector<grid::PlacedGrid> Placed(const GlobalSubmaps& submaps) {
   std::vector<grid::PlacedGrid> placed;
@@ -169,6 +175,48 @@ void WriteMapPicture(const GlobalSubmaps& submaps, const std::vector<StampedPose
     canvas.Set(c, {v, v, v});
   }
   DrawTrajectory(trajectory, canvas);
+  grid::WriteImage(canvas.image(), path);
+}
+
+void WriteCoveragePicture(const grid::OccupancyMap& world,
+                          const std::vector<uint8_t>& coverage_mask,
+                          const std::vector<StampedPose>& truth, const std::filesystem::path& path,
+                          int max_side_px) {
+  const grid::MapLimits& w = world.limits;
+  if (max_side_px < 2 || coverage_mask.size() != static_cast<size_t>(w.num_cells()) ||
+      world.cells.size() != coverage_mask.size()) {
+    throw std::invalid_argument(
+        "WriteCoveragePicture: the mask must have a value per world cell and max_side_px >= 2");
+  }
+  // 'block' world cells a side per pixel.
+  const int side = std::max(w.width(), w.height());
+  const int block = std::max(1, (side + max_side_px - 1) / max_side_px);
+  const grid::MapLimits limits(w.resolution() * block, w.origin(),
+                               std::max(1, (w.width() + block - 1) / block),
+                               std::max(1, (w.height() + block - 1) / block));
+  Canvas canvas(limits);
+  // Higher rank wins a block.
+  const auto rank = [&](int64_t flat) {
+    if (coverage_mask[flat] == 1) return 4;
+    if (coverage_mask[flat] == 2) return 3;
+    if (world.cells[flat] == grid::CellState::kOccupied) return 2;
+    return world.cells[flat] == grid::CellState::kFree ? 1 : 0;
+  };
+  constexpr std::array<Rgb, 5> kColourOfRank = {kUnknownColour, kUnreachableColour, kWallColour,
+                                                kMappedColour, kUnmappedColour};
+  std::vector<int> best(static_cast<size_t>(limits.num_cells()), 0);
+  for (int y = 0; y < w.height(); ++y) {
+    for (int x = 0; x < w.width(); ++x) {
+      int& b = best[static_cast<size_t>(y / block) * limits.width() + x / block];
+      b = std::max(b, rank(static_cast<int64_t>(y) * w.width() + x));
+    }
+  }
+  for (int y = 0; y < limits.height(); ++y) {
+    for (int x = 0; x < limits.width(); ++x) {
+      canvas.Set({x, y}, kColourOfRank[best[static_cast<size_t>(y) * limits.width() + x]]);
+    }
+  }
+  DrawTrajectory(truth, canvas);
   grid::WriteImage(canvas.image(), path);
 }
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "scout/geometry/rigid_transform.h"
+#include "scout/grid/occupancy_map.h"
 #include "scout/grid/probability_grid.h"
 #include "scout/io/trajectory.h"
 
@@ -27,6 +28,21 @@ using GlobalSubmaps =
 // directory is not writable.
 void WriteMapPicture(const GlobalSubmaps& submaps, const std::vector<StampedPose>& trajectory,
                      const std::filesystem::path& path, int max_side_px = 3000);
+
+// Writes a PNG picture of what an exploration run's coverage counted, over
+// the true world: per cell of 'world', 'coverage_mask' holds 0 (not
+// reachable), 1 (reachable, not mapped free) or 2 (reachable and mapped free;
+// exploration::GroundTruth::CoverageMask). Mapped cells are white, unmapped
+// ones magenta, walls black, free space the robot cannot reach light grey and
+// unknown space grey; over it the 'truth' trajectory as in WriteMapPicture.
+// Blocks of cells are drawn as one pixel when a side exceeds 'max_side_px'
+// (an unmapped cell wins its block, so small misses stay visible). Throws
+// std::invalid_argument when the mask does not match the world or
+// max_side_px < 2, InputError when the directory is not writable.
+void WriteCoveragePicture(const grid::OccupancyMap& world,
+                          const std::vector<uint8_t>& coverage_mask,
+                          const std::vector<StampedPose>& truth, const std::filesystem::path& path,
+                          int max_side_px = 3000);
 
 // Writes the fused submaps at the finest submap resolution as a ROS
 // map_server map ('yaml_path' plus a PGM beside it, see grid/map_io.h).

@@ -77,6 +77,55 @@ TEST(WriteMapPicture, CoarsensToMaxSideAndCoversTheTrajectory) {
   EXPECT_THROW(WriteMapPicture(submaps, trajectory, path, 1), std::invalid_argument);
 }
 
+// A 40 x 20 cell world at 0.1 m: a wall at column 20, free elsewhere; the
+// left half reachable, its top-left 5 x 5 cells not mapped.
+struct CoverageScene {
+  grid::OccupancyMap world;
+  std::vector<uint8_t> mask;
+  CoverageScene() {
+    world.limits = grid::MapLimits(0.1, {0.0, 0.0}, 40, 20);
+    world.cells.assign(world.limits.num_cells(), grid::CellState::kFree);
+    mask.assign(world.limits.num_cells(), 0);
+    for (int y = 0; y < 20; ++y) {
+      world.set({20, y}, grid::CellState::kOccupied);
+      for (int x = 0; x < 20; ++x) mask[world.limits.FlatIndex({x, y})] = x < 5 && y >= 15 ? 1 : 2;
+    }
+  }
+};
+
+TEST(WriteCoveragePicture, ShowsMappedAndUnmappedReachableCells) {
+  const grid::TestTempDirectory dir;
+  const CoverageScene scene;
+  const auto path = dir.path() / "coverage.png";
+  WriteCoveragePicture(scene.world, scene.mask, {}, path);
+  const grid::Image image = grid::ReadImage(path);
+  ASSERT_EQ(image.width, 40);
+  ASSERT_EQ(image.height, 20);
+  // Rows flipped: world row y is image row 19 - y.
+  const auto at = [&](int x, int y) { return image.at(x, 19 - y); };
+  EXPECT_TRUE(IsColoured(at(2, 17)));  // unmapped: magenta
+  EXPECT_GT(at(2, 17)[2], at(2, 17)[1]);
+  EXPECT_EQ(at(10, 5)[0], 255);  // mapped: white
+  EXPECT_FALSE(IsColoured(at(10, 5)));
+  EXPECT_EQ(at(20, 5)[0], 0);    // the wall
+  EXPECT_EQ(at(30, 5)[0], 228);  // free but not reachable
+}
+
+TEST(WriteCoveragePicture, CoarseBlocksKeepUnmappedCellsVisible) {
+  const grid::TestTempDirectory dir;
+  CoverageScene scene;
+  // One unmapped cell alone in a mapped area.
+  scene.mask[scene.world.limits.FlatIndex({12, 3})] = 1;
+  const auto path = dir.path() / "small.png";
+  WriteCoveragePicture(scene.world, scene.mask, {}, path, 10);
+  const grid::Image image = grid::ReadImage(path);
+  EXPECT_EQ(image.width, 10);  // blocks of 4 x 4 cells
+  EXPECT_EQ(image.height, 5);
+  EXPECT_TRUE(IsColoured(image.at(12 / 4, 4 - 3 / 4)));
+  EXPECT_FALSE(IsColoured(image.at(2, 2)));
+  EXPECT_THROW(WriteCoveragePicture(scene.world, {1, 2}, {}, path), std::invalid_argument);
+}
+
 TEST(WriteMapServerMap, WritesTheFusedMapAtSubmapResolution) {
   const grid::TestTempDirectory dir;
   const GlobalSubmaps submaps = {{geometry::Rigid2d(1.0, 2.0, 0.0), HalfKnownSubmap()},
