@@ -2,6 +2,68 @@
 # from `scout results-table`, which prints the command of each run above it; runs that do not
 # exist (not run yet, or failed) are listed as such with the command that would produce them.
 
+# build_commit: the commit the scout binary was built from, "+modified" when the sources differ
+# from it (the run is then attributed to that commit, and the document says so).
+build_commit() {
+  local commit
+  commit=$(git rev-parse --short=12 HEAD 2>/dev/null) || { echo unknown; return 0; }
+  if [[ -n $(git status --porcelain -- src apps cmake config CMakeLists.txt 2>/dev/null) ]]; then
+    echo "$commit +modified"
+  else
+    echo "$commit"
+  fi
+}
+
+# made_before COMMIT NAME: true when run NAME was made by a build that does not contain COMMIT.
+# Runs without build.txt (made before it was recorded) are judged by the time of their summary.
+made_before() {
+  local commit=$1 f=$OUT/$2/build.txt built
+  if [[ -f $f ]]; then
+    built=$(cut -d' ' -f1 "$f")
+    git cat-file -e "$built^{commit}" 2>/dev/null || return 0
+    ! git merge-base --is-ancestor "$commit" "$built"
+  else
+    local since
+    since=$(git log -1 --format=%ct "$commit" 2>/dev/null) || return 1
+    (($(stat -c %Y "$OUT/$2/summary.json") < since))
+  fi
+}
+
+# store_run NAME SECTION: copies run NAME's small outputs into $STORE/NAME (a replay's figures too,
+# which the document embeds), replacing what was there.
+store_run() {
+  local name=$1 section=$2 dir=$OUT/$1 f
+  [[ -n $STORE ]] || return 0
+  rm -rf "$STORE/$name.tmp"
+  mkdir -p "$STORE/$name.tmp"
+  for f in summary.json command.txt build.txt coverage.csv frontier.csv; do
+    if [[ -f $dir/$f ]]; then cp "$dir/$f" "$STORE/$name.tmp/"; fi
+  done
+  if [[ $section == replay && -d $dir/figures ]]; then cp -r "$dir/figures" "$STORE/$name.tmp/"; fi
+  rm -rf "$STORE/$name"
+  mv "$STORE/$name.tmp" "$STORE/$name"
+}
+
+# restore_run NAME: when $OUT/NAME has no finished run, copies the stored one there.
+restore_run() {
+  local name=$1
+  [[ -n $STORE && -f $STORE/$name/summary.json && -f $STORE/$name/command.txt ]] || return 0
+  [[ -f $OUT/$name/summary.json && -f $OUT/$name/command.txt ]] && return 0
+  rm -rf "${OUT:?}/$name"
+  mkdir -p "$OUT"
+  cp -r "$STORE/$name" "$OUT/$name"
+}
+
+# builds_note NAME...: which builds made the finished runs, so a reader sees what is mixed.
+builds_note() {
+  local name f
+  for name in "$@"; do
+    f=$OUT/$name/build.txt
+    [[ -f $OUT/$name/summary.json ]] || continue
+    if [[ -f $f ]]; then cat "$f"; else echo "not recorded"; fi
+  done | sort | uniq -c | sort -rn | awk '{c=$1; $1=""; sub(/^ /,""); printf "%s`%s` (%d runs)", (NR>1?", ":""), $0, c} END {if (NR) print ""}'
+}
+
 # existing NAME...: prints the directories of the runs that finished.
 existing() {
   local name
@@ -46,17 +108,14 @@ EXPLORE_BEHAVIOUR_COMMIT=3a364b5
 EXPLORE_STUCK_COMMIT=8a6e5c2
 EXPLORE_RETRY_COMMIT=137c2f9
 stale_runs() {
-  local since since_stuck since_retry name f t
-  since=$(git log -1 --format=%ct "$EXPLORE_BEHAVIOUR_COMMIT" 2>/dev/null) || return 0
-  since_stuck=$(git log -1 --format=%ct "$EXPLORE_STUCK_COMMIT" 2>/dev/null) || since_stuck=0
-  since_retry=$(git log -1 --format=%ct "$EXPLORE_RETRY_COMMIT" 2>/dev/null) || since_retry=0
+  local name f
   for name in "$@"; do
     f=$OUT/$name/summary.json
     [[ -f $f ]] || continue
-    t=$(stat -c %Y "$f")
-    if ((t < since)) ||
-      { ((t < since_stuck)) && grep -Eq '"recoveries": *[1-9]' "$f"; } ||
-      { ((t < since_retry)) && grep -Eq '"reachable_frontier_left": *[1-9]' "$f"; }; then
+    if made_before "$EXPLORE_BEHAVIOUR_COMMIT" "$name" ||
+      { made_before "$EXPLORE_STUCK_COMMIT" "$name" && grep -Eq '"recoveries": *[1-9]' "$f"; } ||
+      { made_before "$EXPLORE_RETRY_COMMIT" "$name" &&
+        grep -Eq '"reachable_frontier_left": *[1-9]' "$f"; }; then
       printf '`%s` ' "$name"
     fi
   done
@@ -67,12 +126,10 @@ stale_runs() {
 # older than it reports the earlier exact.
 FRONTIER_EXACT_COMMIT=b77b701
 stale_frontier_runs() {
-  local since name f
-  since=$(git log -1 --format=%ct "$FRONTIER_EXACT_COMMIT" 2>/dev/null) || return 0
+  local name
   for name in "$@"; do
-    f=$OUT/$name/summary.json
-    [[ -f $f ]] || continue
-    if (($(stat -c %Y "$f") < since)); then printf '`%s` ' "$name"; fi
+    [[ -f $OUT/$name/summary.json ]] || continue
+    if made_before "$FRONTIER_EXACT_COMMIT" "$name"; then printf '`%s` ' "$name"; fi
   done
   return 0
 }
@@ -82,14 +139,21 @@ stale_frontier_runs() {
 # measure. A replay run older than it is redone.
 REPLAY_SLAM_COMMIT=6c5133f
 stale_replay_runs() {
-  local since name f
-  since=$(git log -1 --format=%ct "$REPLAY_SLAM_COMMIT" 2>/dev/null) || return 0
+  local name
   for name in "$@"; do
-    f=$OUT/$name/summary.json
-    [[ -f $f ]] || continue
-    if (($(stat -c %Y "$f") < since)); then printf '`%s` ' "$name"; fi
+    [[ -f $OUT/$name/summary.json ]] || continue
+    if made_before "$REPLAY_SLAM_COMMIT" "$name"; then printf '`%s` ' "$name"; fi
   done
   return 0
+}
+
+# stale_section_run SECTION NAME: prints NAME if a commit after its build changed its result.
+stale_section_run() {
+  case $1 in
+    explore) stale_runs "$2" ;;
+    replay) stale_frontier_runs "$2"; stale_replay_runs "$2" ;;
+    *) stale_frontier_runs "$2" ;;
+  esac
 }
 
 # stale_note NAME...: a paragraph naming the frontier runs made before FRONTIER_EXACT_COMMIT.
@@ -171,7 +235,23 @@ explore_figures() {
   done
 }
 
+# store_finished NAME...: stores every finished run with a recorded build the store lacks or holds
+# in another version (runs made before the store existed, or by an interrupted script).
+store_finished() {
+  local name section
+  [[ -n $STORE ]] || return 0
+  for name in "$@"; do
+    [[ -f $OUT/$name/summary.json && -f $OUT/$name/command.txt && -f $OUT/$name/build.txt ]] ||
+      continue
+    cmp -s "$OUT/$name/summary.json" "$STORE/$name/summary.json" && continue
+    section=other; [[ $name == replay-* ]] && section=replay
+    store_run "$name" "$section"
+  done
+}
+
 write_document() {
+  local all=("${REPLAY[@]}" "${EXPLORE[@]}" "${EPS[@]}" "${SIZE[@]}" "${BENCH[@]}")
+  store_finished "${all[@]}"
   rm -rf "$FIG"
   mkdir -p "$FIG" "$(dirname "$DOC")"
   local first_run=${REPLAY[0]}
@@ -184,6 +264,12 @@ write_document() {
     echo "\`scout\` is \`$SCOUT\`. Every table lists the command of each of its runs;"
     echo "runs that did not finish are listed under **Not run**. Times are wall-clock on a shared"
     echo "machine: compare them within a table, not across tables. Figures in \`$FIG/\`."
+    if [[ -n $STORE ]]; then
+      echo "Each run's small outputs are kept in \`$STORE/\` (summary, command, build, CSVs), so"
+      echo "the document can be rewritten from a clean checkout; a run is redone only when a later"
+      echo "commit changed what it measures. Builds that made these runs (commit, runs):"
+      echo "$(builds_note "${all[@]}")."
+    fi
     echo
     echo "Column meanings: *points re-queried* is summed over all optimisation rounds; *P* ="
     echo "1 − points(strategy) / points(dfd); *accuracy*, *precision*, *recall* and *wrong answers*"
