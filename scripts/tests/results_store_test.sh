@@ -1,0 +1,69 @@
+#!/usr/bin/env bash
+# Tests the run store and staleness rules of scripts/results_document.sh: a stored run comes back
+# on a clean checkout, an existing run is never overwritten, and a run is stale exactly when its
+# build lacks a commit that changed what it measures. Needs the repository's history (exit 77 =
+# skipped in a shallow clone).
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+source scripts/results_document.sh
+
+TMP=$(mktemp -d)
+trap 'rm -rf "$TMP"' EXIT
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+OUT=$TMP/out; STORE=$TMP/store
+make_run() {  # make_run NAME BUILD
+  mkdir -p "$OUT/$1/figures"
+  echo '{"scans": 3}' >"$OUT/$1/summary.json"
+  echo "scout replay x --out $OUT/$1" >"$OUT/$1/command.txt"
+  echo "$2" >"$OUT/$1/build.txt"
+  echo "round,strategy" >"$OUT/$1/frontier.csv"
+  echo P5 >"$OUT/$1/map.pgm"
+  echo '<svg></svg>' >"$OUT/$1/figures/p.svg"
+}
+
+head=$(git rev-parse --short=12 HEAD)
+make_run replay-a "$head"
+store_run replay-a replay
+[[ -f $STORE/replay-a/summary.json && -f $STORE/replay-a/build.txt ]] || fail "summary not stored"
+[[ -f $STORE/replay-a/figures/p.svg ]] || fail "a replay's figures are stored"
+[[ ! -e $STORE/replay-a/map.pgm ]] || fail "large outputs are not stored"
+[[ ! -e $STORE/replay-a.tmp ]] || fail "no temporary directory left"
+
+# A clean checkout: the run comes back from the store.
+rm -rf "$OUT"
+restore_run replay-a
+cmp -s "$OUT/replay-a/summary.json" "$STORE/replay-a/summary.json" || fail "run not restored"
+
+# A finished run in OUT is never replaced by the stored one.
+echo '{"scans": 4}' >"$OUT/replay-a/summary.json"
+restore_run replay-a
+grep -q '"scans": 4' "$OUT/replay-a/summary.json" || fail "restore overwrote a finished run"
+
+# store_finished stores changed runs, and skips runs whose build is not recorded.
+store_finished replay-a
+grep -q '"scans": 4' "$STORE/replay-a/summary.json" || fail "changed run not stored again"
+make_run explore-b "$head"
+rm "$OUT/explore-b/build.txt"
+store_finished explore-b
+[[ ! -e $STORE/explore-b ]] || fail "a run without build.txt was stored"
+
+if ! git cat-file -e "$FRONTIER_EXACT_COMMIT^{commit}" 2>/dev/null ||
+  ! git cat-file -e "$FRONTIER_EXACT_COMMIT~1^{commit}" 2>/dev/null; then
+  echo "SKIP: no history back to $FRONTIER_EXACT_COMMIT (shallow clone); staleness not tested"
+  exit 77
+fi
+[[ -z $(stale_section_run bench replay-a) ]] || fail "a run made by HEAD is stale"
+git rev-parse --short=12 "$FRONTIER_EXACT_COMMIT~1" >"$OUT/replay-a/build.txt"
+[[ $(stale_section_run bench replay-a) == '`replay-a` ' ]] || fail "a run older than the commit is not stale"
+git rev-parse --short=12 "$FRONTIER_EXACT_COMMIT" >"$OUT/replay-a/build.txt"
+[[ -z $(stale_frontier_runs replay-a) ]] || fail "a run made by the commit itself is stale"
+echo "0123456789ab" >"$OUT/replay-a/build.txt"
+[[ -n $(stale_frontier_runs replay-a) ]] || fail "a run by an unknown build is not stale"
+echo "$head +modified" >"$OUT/replay-a/build.txt"
+[[ -z $(stale_frontier_runs replay-a) ]] || fail "a modified build of HEAD is stale"
+# Without build.txt, the summary's time decides.
+rm "$OUT/replay-a/build.txt"
+touch -d @0 "$OUT/replay-a/summary.json"
+[[ -n $(stale_frontier_runs replay-a) ]] || fail "an old run without build.txt is not stale"
+echo "results store: all checks passed"
