@@ -35,8 +35,9 @@ bench: build
 	$(BUILD_DIR)/bench/scout_bench
 
 # The whole evaluation (hours; resumable): out/results/, docs/RESULTS.md, docs/figures/.
+# RESULTS_ARGS: options of scripts/results, e.g. RESULTS_ARGS="--only 'explore-museum-*'".
 results: build
-	SCOUT=$(SCOUT) bash scripts/results
+	SCOUT=$(SCOUT) bash scripts/results $(RESULTS_ARGS)
 
 # A few minutes: small worlds and prefixes into out/results-quick/, checked for tables and figures.
 results-quick: build
