@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "scout/common/parallel.h"
+#include "scout/slam/submap_chain.h"
 
 namespace scout::slam {
 namespace {
@@ -56,6 +57,12 @@ void Validate(const PoseGraphOptions& options) {
                                 std::to_string(options.skip_neighbour_submaps));
   }
   RequirePositive("intra_submap_translation_weight", options.intra_submap_translation_weight);
+  if (!(options.loop_closure_chain_travel_m >= 0.0) ||
+      !std::isfinite(options.loop_closure_chain_travel_m)) {
+    throw std::invalid_argument(
+        "pose_graph option 'loop_closure_chain_travel_m': expected a finite value >= 0, got " +
+        std::to_string(options.loop_closure_chain_travel_m));
+  }
   RequirePositive("outlier_translation_m", options.outlier_translation_m);
   RequirePositive("outlier_rotation_deg", options.outlier_rotation_deg);
   if (options.max_outlier_rounds < 0) {
@@ -233,6 +240,34 @@ void PoseGraph::SearchPairs(const std::vector<std::pair<int, int>>& pairs) {
     std::shared_ptr<const PointCloud> points;
     double travel_m = 0.0;
   };
+  // The pairs share their node (a new node against the finished submaps) or
+  // their submap (a finished submap against older nodes): one shortest-chain
+  // search from that end gives the chain to every other.
+  const auto same_node = [&] {
+    return std::all_of(pairs.begin(), pairs.end(),
+                       [&](const auto& p) { return p.first == pairs.front().first; });
+  };
+  const auto same_submap = [&] {
+    return std::all_of(pairs.begin(), pairs.end(),
+                       [&](const auto& p) { return p.second == pairs.front().second; });
+  };
+  enum class Chain { kNone, kFromNode, kFromSubmap } chain_from = Chain::kNone;
+  std::vector<double> chain_m;
+  if (options_.search_windows_through_loop_closures && !pairs.empty()) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    std::vector<std::pair<int, double>> sources;
+    if (same_node()) {
+      const Node& node = nodes_[pairs.front().first];
+      for (int a : node.submap_ids) {
+        sources.emplace_back(a, std::abs(node.travel_m - SubmapStartTravel(a)));
+      }
+      chain_from = Chain::kFromNode;
+    } else if (same_submap()) {
+      sources.emplace_back(pairs.front().second, 0.0);
+      chain_from = Chain::kFromSubmap;
+    }
+    if (chain_from != Chain::kNone) chain_m = ChainTravel(sources);
+  }
   std::vector<Search> chosen;
   for (const auto& [node_id, submap_id] : pairs) {
     Search s;
@@ -251,6 +286,14 @@ void PoseGraph::SearchPairs(const std::vector<std::pair<int, int>>& pairs) {
       const double first_m = nodes_[members.front()].travel_m;
       const double last_m = nodes_[members.back()].travel_m;
       s.travel_m = std::max({0.0, first_m - node_travel_m, node_travel_m - last_m});
+      if (chain_from == Chain::kFromNode) {
+        s.travel_m = std::min(s.travel_m, chain_m[submap_id]);
+      } else if (chain_from == Chain::kFromSubmap) {
+        for (int a : nodes_[node_id].submap_ids) {
+          s.travel_m =
+              std::min(s.travel_m, chain_m[a] + std::abs(node_travel_m - SubmapStartTravel(a)));
+        }
+      }
     }
     if (constraint_builder_.ShouldSearch(submap_id, s.initial_relative_pose, *s.points,
                                          node_travel_m)) {
@@ -272,9 +315,33 @@ void PoseGraph::SearchPairs(const std::vector<std::pair<int, int>>& pairs) {
     ++stats_.num_searches;
     if (f) {
       constraints_.push_back(*f);
+      AddLoopLink(*f);
       ++stats_.num_loop_closures;
     }
   }
+}
+
+double PoseGraph::SubmapStartTravel(int submap_id) const {
+  return nodes_[submaps_[submap_id].node_ids.front()].travel_m;
+}
+
+void PoseGraph::AddLoopLink(const Constraint& closure) {
+  const Node& node = nodes_[closure.node_id];
+  for (int a : node.submap_ids) {
+    const double travel_m =
+        std::abs(node.travel_m - SubmapStartTravel(a)) + options_.loop_closure_chain_travel_m;
+    const int high = std::max(a, closure.submap_id);
+    if (loop_links_.size() <= static_cast<size_t>(high)) loop_links_.resize(high + 1);
+    loop_links_[a].push_back({closure.submap_id, travel_m});
+    loop_links_[closure.submap_id].push_back({a, travel_m});
+  }
+}
+
+std::vector<double> PoseGraph::ChainTravel(
+    const std::vector<std::pair<int, double>>& sources) const {
+  std::vector<double> start_travel_m(submaps_.size());
+  for (size_t i = 0; i < submaps_.size(); ++i) start_travel_m[i] = SubmapStartTravel(i);
+  return ShortestChainTravel(start_travel_m, loop_links_, sources);
 }
 
 void PoseGraph::Optimize(int num_nodes, int num_submaps) {
@@ -333,6 +400,12 @@ void PoseGraph::ApplySolve(int num_nodes, int num_submaps, const SolveOutput& ou
       submaps_[i].state.global_pose = local_to_global_ * submaps_[i].state.local_pose;
     }
     std::erase_if(constraints_, [&](const Constraint& c) { return Contains(rejected, c); });
+    if (!rejected.empty()) {
+      loop_links_.clear();
+      for (const Constraint& c : constraints_) {
+        if (c.kind == ConstraintKind::kInterSubmap) AddLoopLink(c);
+      }
+    }
     stats_.num_rejected_loop_closures += static_cast<int>(rejected.size());
     stats_.num_loop_closures -= static_cast<int>(rejected.size());
     ++stats_.num_optimizations;
