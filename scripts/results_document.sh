@@ -313,7 +313,7 @@ write_document() {
     stale=$(stale_runs "${EXPLORE[@]}")
     if [[ -n $stale ]]; then
       echo "Made with a build older than commit $EXPLORE_BEHAVIOUR_COMMIT, the last that changed what"
-      echo "every policy's robot does or how runs are scored (see \\`scripts/results_document.sh\\`;"
+      echo "every policy's robot does or how runs are scored (see \`scripts/results_document.sh\`;"
       echo "$EXPLORE_BEHAVIOUR_COMMIT: loop-closure search windows sized along chains of closures); or older than"
       echo "$EXPLORE_STUCK_COMMIT with a stuck recovery, or than $EXPLORE_RETRY_COMMIT with reachable frontier"
       echo "left at the end (the runs those commits change), so not like-for-like with the other"
