@@ -98,9 +98,9 @@ not_run() {
 # the true world through the submap that mapped it (the unreachable count); c287408: the
 # simulated lidar's beams 0.5 degree apart instead of 1; b36f01e (hand-written Jacobians:
 # other rounding, so other trajectories), ef5e713 (no_progress from what scans map) and
-# 3a364b5 (pose-graph solves applied 10 nodes after they start); 93a957a (loop-closure search
-# windows sized along the shortest chain of submaps and closures: other closures, other maps).
-EXPLORE_BEHAVIOUR_COMMIT=93a957a
+# 3a364b5 (pose-graph solves applied 10 nodes after they start). 93a957a's search windows along
+# chains of loop closures are off by default (config/default.yaml), so runs are unchanged by it.
+EXPLORE_BEHAVIOUR_COMMIT=3a364b5
 # d725b7b (a goal fails on its second stuck recovery, not its first) and 8a6e5c2 (backing
 # up stops at a mapped obstacle behind) change only runs with a stuck recovery; 137c2f9
 # (failed goals next to reachable frontier tried once more before finishing) only runs
@@ -137,9 +137,9 @@ stale_frontier_runs() {
 
 # 6c5133f: loop closures in thin submaps judged against their own scans (f236b19, then the
 # ambiguity margin), which changes the Radish replays' SLAM; 560cef9 added the consistency
-# measure; 93a957a sized loop-closure search windows along chains of closures. A replay run older
-# than it is redone.
-REPLAY_SLAM_COMMIT=93a957a
+# measure. A replay run older than it is redone. (93a957a's chained search windows are off by
+# default, so replays are unchanged.)
+REPLAY_SLAM_COMMIT=6c5133f
 stale_replay_runs() {
   local name
   for name in "$@"; do
@@ -314,7 +314,7 @@ write_document() {
     if [[ -n $stale ]]; then
       echo "Made with a build older than commit $EXPLORE_BEHAVIOUR_COMMIT, the last that changed what"
       echo "every policy's robot does or how runs are scored (see \`scripts/results_document.sh\`;"
-      echo "$EXPLORE_BEHAVIOUR_COMMIT: loop-closure search windows sized along chains of closures); or older than"
+      echo "$EXPLORE_BEHAVIOUR_COMMIT: pose-graph solves applied 10 nodes after they start); or older than"
       echo "$EXPLORE_STUCK_COMMIT with a stuck recovery, or than $EXPLORE_RETRY_COMMIT with reachable frontier"
       echo "left at the end (the runs those commits change), so not like-for-like with the other"
       echo "runs: $stale"
