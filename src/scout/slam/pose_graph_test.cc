@@ -171,6 +171,27 @@ TEST(PoseGraphTest, LoopClosuresRemoveTheDriftOfLocalSlam) {
   EXPECT_EQ(out.nodes[7].time_s, DriveRun()[7].time_s);
 }
 
+TEST(PoseGraphTest, SearchWindowsAlongChainsOfLoopClosuresStillCloseTheLoop) {
+  // Windows sized by the chain through closures shrink once the loop is
+  // closed; the loop must close all the same, and as tightly.
+  PoseGraphOptions options = Synchronous();
+  options.optimize_every_travel_m = 0.0;
+  options.search_windows_through_loop_closures = true;
+  const Outcome chained = Feed(options);
+  options.search_windows_through_loop_closures = false;
+  const Outcome plain = Feed(options);
+  std::vector<Rigid2d> local, chained_poses, plain_poses;
+  for (size_t i = 0; i < DriveRun().size(); ++i) {
+    local.push_back(DriveRun()[i].local_pose);
+    chained_poses.push_back(chained.nodes[i].pose);
+    plain_poses.push_back(plain.nodes[i].pose);
+  }
+  const double open_loop = RmsError(local, DriveRun());
+  EXPECT_GT(chained.stats.num_loop_closures, 10);
+  EXPECT_LT(RmsError(chained_poses, DriveRun()), 0.25 * open_loop);
+  EXPECT_LT(RmsError(chained_poses, DriveRun()), RmsError(plain_poses, DriveRun()) + 0.05);
+}
+
 TEST(PoseGraphTest, ExactLocalSlamStaysExact) {
   // Loop closures must not bias a trajectory that needs no correction (a
   // self-similar corridor once shifted this one by 11 cm).
