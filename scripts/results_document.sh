@@ -29,17 +29,17 @@ made_before() {
   fi
 }
 
-# store_run NAME SECTION: copies run NAME's small outputs into $STORE/NAME (a replay's figures too,
-# which the document embeds), replacing what was there.
+# store_run NAME: copies run NAME's small outputs into $STORE/NAME (a replay's figures too, which
+# the document embeds), replacing what was there.
 store_run() {
-  local name=$1 section=$2 dir=$OUT/$1 f
+  local name=$1 dir=$OUT/$1 f
   [[ -n $STORE ]] || return 0
   rm -rf "$STORE/$name.tmp"
   mkdir -p "$STORE/$name.tmp"
   for f in summary.json command.txt build.txt coverage.csv frontier.csv; do
     if [[ -f $dir/$f ]]; then cp "$dir/$f" "$STORE/$name.tmp/"; fi
   done
-  if [[ $section == replay && -d $dir/figures ]]; then cp -r "$dir/figures" "$STORE/$name.tmp/"; fi
+  if [[ $name == replay-* && -d $dir/figures ]]; then cp -r "$dir/figures" "$STORE/$name.tmp/"; fi
   rm -rf "$STORE/$name"
   mv "$STORE/$name.tmp" "$STORE/$name"
 }
@@ -126,11 +126,13 @@ stale_runs() {
 # (always as full) but queries fewer points, with different times, so a replay or frontier-bench run
 # older than it reports the earlier exact.
 FRONTIER_EXACT_COMMIT=b77b701
-stale_frontier_runs() {
-  local name
+# stale_since COMMIT NAME...: the finished runs whose build does not contain COMMIT.
+stale_since() {
+  local commit=$1 name
+  shift
   for name in "$@"; do
     [[ -f $OUT/$name/summary.json ]] || continue
-    if made_before "$FRONTIER_EXACT_COMMIT" "$name"; then printf '`%s` ' "$name"; fi
+    if made_before "$commit" "$name"; then printf '`%s` ' "$name"; fi
   done
   return 0
 }
@@ -140,28 +142,19 @@ stale_frontier_runs() {
 # measure. A replay run older than it is redone. (93a957a's chained search windows are off by
 # default, so replays are unchanged.)
 REPLAY_SLAM_COMMIT=6c5133f
-stale_replay_runs() {
-  local name
-  for name in "$@"; do
-    [[ -f $OUT/$name/summary.json ]] || continue
-    if made_before "$REPLAY_SLAM_COMMIT" "$name"; then printf '`%s` ' "$name"; fi
-  done
-  return 0
-}
-
 # stale_section_run SECTION NAME: prints NAME if a commit after its build changed its result.
 stale_section_run() {
   case $1 in
     explore) stale_runs "$2" ;;
-    replay) stale_frontier_runs "$2"; stale_replay_runs "$2" ;;
-    *) stale_frontier_runs "$2" ;;
+    replay) stale_since "$FRONTIER_EXACT_COMMIT" "$2"; stale_since "$REPLAY_SLAM_COMMIT" "$2" ;;
+    *) stale_since "$FRONTIER_EXACT_COMMIT" "$2" ;;
   esac
 }
 
 # stale_note NAME...: a paragraph naming the frontier runs made before FRONTIER_EXACT_COMMIT.
 stale_note() {
   local stale
-  stale=$(stale_frontier_runs "$@")
+  stale=$(stale_since "$FRONTIER_EXACT_COMMIT" "$@")
   [[ -z $stale ]] && return 0
   echo "Made with a build older than commit $FRONTIER_EXACT_COMMIT (\`exact\` with witnesses), so"
   echo "their \`exact\` rows show the earlier \`exact\`: $stale"
@@ -240,14 +233,13 @@ explore_figures() {
 # store_finished NAME...: stores every finished run with a recorded build the store lacks or holds
 # in another version (runs made before the store existed, or by an interrupted script).
 store_finished() {
-  local name section
+  local name
   [[ -n $STORE ]] || return 0
   for name in "$@"; do
     [[ -f $OUT/$name/summary.json && -f $OUT/$name/command.txt && -f $OUT/$name/build.txt ]] ||
       continue
     cmp -s "$OUT/$name/summary.json" "$STORE/$name/summary.json" && continue
-    section=other; [[ $name == replay-* ]] && section=replay
-    store_run "$name" "$section"
+    store_run "$name"
   done
 }
 

@@ -24,7 +24,7 @@ make_run() {  # make_run NAME BUILD
 
 head=$(git rev-parse --short=12 HEAD)
 make_run replay-a "$head"
-store_run replay-a replay
+store_run replay-a
 [[ -f $STORE/replay-a/summary.json && -f $STORE/replay-a/build.txt ]] || fail "summary not stored"
 [[ -f $STORE/replay-a/figures/p.svg ]] || fail "a replay's figures are stored"
 [[ ! -e $STORE/replay-a/map.pgm ]] || fail "large outputs are not stored"
@@ -57,13 +57,13 @@ fi
 git rev-parse --short=12 "$FRONTIER_EXACT_COMMIT~1" >"$OUT/replay-a/build.txt"
 [[ $(stale_section_run bench replay-a) == '`replay-a` ' ]] || fail "a run older than the commit is not stale"
 git rev-parse --short=12 "$FRONTIER_EXACT_COMMIT" >"$OUT/replay-a/build.txt"
-[[ -z $(stale_frontier_runs replay-a) ]] || fail "a run made by the commit itself is stale"
+[[ -z $(stale_since "$FRONTIER_EXACT_COMMIT" replay-a) ]] || fail "a run made by the commit itself is stale"
 echo "0123456789ab" >"$OUT/replay-a/build.txt"
-[[ -n $(stale_frontier_runs replay-a) ]] || fail "a run by an unknown build is not stale"
+[[ -n $(stale_since "$FRONTIER_EXACT_COMMIT" replay-a) ]] || fail "a run by an unknown build is not stale"
 echo "$head +modified" >"$OUT/replay-a/build.txt"
-[[ -z $(stale_frontier_runs replay-a) ]] || fail "a modified build of HEAD is stale"
+[[ -z $(stale_since "$FRONTIER_EXACT_COMMIT" replay-a) ]] || fail "a modified build of HEAD is stale"
 # Without build.txt, the summary's time decides.
 rm "$OUT/replay-a/build.txt"
 touch -d @0 "$OUT/replay-a/summary.json"
-[[ -n $(stale_frontier_runs replay-a) ]] || fail "an old run without build.txt is not stale"
+[[ -n $(stale_since "$FRONTIER_EXACT_COMMIT" replay-a) ]] || fail "an old run without build.txt is not stale"
 echo "results store: all checks passed"

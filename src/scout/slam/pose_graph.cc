@@ -315,7 +315,7 @@ void PoseGraph::SearchPairs(const std::vector<std::pair<int, int>>& pairs) {
     ++stats_.num_searches;
     if (f) {
       constraints_.push_back(*f);
-      AddLoopLink(*f);
+      if (options_.search_windows_through_loop_closures) AddLoopLink(*f);
       ++stats_.num_loop_closures;
     }
   }
@@ -400,7 +400,7 @@ void PoseGraph::ApplySolve(int num_nodes, int num_submaps, const SolveOutput& ou
       submaps_[i].state.global_pose = local_to_global_ * submaps_[i].state.local_pose;
     }
     std::erase_if(constraints_, [&](const Constraint& c) { return Contains(rejected, c); });
-    if (!rejected.empty()) {
+    if (!rejected.empty() && options_.search_windows_through_loop_closures) {
       loop_links_.clear();
       for (const Constraint& c : constraints_) {
         if (c.kind == ConstraintKind::kInterSubmap) AddLoopLink(c);
