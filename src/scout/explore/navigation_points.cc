@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <deque>
 #include <limits>
 
 #include "scout/explore/option_check.h"
@@ -58,7 +57,9 @@ std::vector<int> SplitByConnectivity(const PlanningMap& map,
 
   std::vector<int> region(w > 0 && h > 0 ? static_cast<size_t>(w) * h : 0, -1);
   int next = 0;
-  std::deque<grid::CellIndex> queue;
+  // A stack, not a queue: the region is the same in any order, and a vector
+  // reuses its memory from flood to flood.
+  std::vector<grid::CellIndex> stack;
   for (size_t i = 0; i < points.size(); ++i) {
     const grid::CellIndex c = limits.CellContaining(points[i]);
     const bool in_window = c.x >= a.x && c.y >= a.y && c.x <= b.x && c.y <= b.y;
@@ -70,15 +71,15 @@ std::vector<int> SplitByConnectivity(const PlanningMap& map,
     if (seed < 0) {
       // Flood the seed's region once; later points in it just read the label.
       seed = next++;
-      queue.push_back(c);
-      while (!queue.empty()) {
-        const grid::CellIndex u = queue.front();
-        queue.pop_front();
+      stack.push_back(c);
+      while (!stack.empty()) {
+        const grid::CellIndex u = stack.back();
+        stack.pop_back();
         for (int k = 0; k < 4; ++k) {
           const grid::CellIndex v{u.x + kNeighbourOffsets[k][0], u.y + kNeighbourOffsets[k][1]};
           if (v.x < a.x || v.y < a.y || v.x > b.x || v.y > b.y || !open(v)) continue;
           int& rv = region[(v.y - a.y) * w + (v.x - a.x)];
-          if (rv < 0) rv = seed, queue.push_back(v);
+          if (rv < 0) rv = seed, stack.push_back(v);
         }
       }
     }

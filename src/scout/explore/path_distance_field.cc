@@ -12,35 +12,38 @@ PathDistanceField::PathDistanceField(const PlanningMap& map, const Eigen::Vector
 
 PathDistanceField::PathDistanceField(const PlanningMap& map, const StartRegion& start)
     : limits_(map.limits()),
-      distance_m_(static_cast<size_t>(padded_width()) * (limits_.height() + 2), kUnreachable) {
+      res_(static_cast<float>(limits_.resolution())),
+      distance_cells_(static_cast<size_t>(padded_width()) * (limits_.height() + 2), kUnreachable) {
   if (start.empty()) return;
-  const float res = static_cast<float>(limits_.resolution());
+  const float res = res_;
 
   // Dijkstra in cell units over the traversability codes padded by one
-  // closed cell; kSettled marks cells whose distance is final.
+  // closed cell; kSettled marks cells whose distance is final. Distances stay
+  // in cell units (at() scales them): a final pass over every cell of a
+  // museum-sized map cost as much as a tenth of the search.
   const int w = limits_.width(), h = limits_.height();
   const int64_t pw = padded_width();
   constexpr uint8_t kSettled = 0x80;
-  std::vector<uint8_t> code(distance_m_.size(), 0);
+  std::vector<uint8_t> code(distance_cells_.size(), 0);
   const std::vector<uint8_t>& codes = map.traversability_codes();
   for (int y = 0; y < h; ++y) {
     std::memcpy(&code[(y + 1) * pw + 1], &codes[int64_t{y} * w], w);
   }
-  // Entering a cell costs the step length times its factor (by code).
+  // Entering a cell costs the step length times its factor (by code); the
+  // products are formed once, as the search adds them.
   static_assert(PlanningMap::kNarrow == 2);
-  const float factor_of[3] = {0.0f, 1.0f, static_cast<float>(map.options().narrow_cost_factor)};
-  float* const d = distance_m_.data();
-  const int64_t step[8] = {1, -1, pw, -pw, pw + 1, -pw + 1, pw - 1, -pw - 1};
-  // For a diagonal step, the two orthogonal cells it passes between.
-  const int64_t side_a[8] = {0, 0, 0, 0, 1, 1, -1, -1};
-  const int64_t side_b[8] = {0, 0, 0, 0, pw, -pw, pw, -pw};
-  const float cost[8] = {
-      1, 1, 1, 1, float(M_SQRT2), float(M_SQRT2), float(M_SQRT2), float(M_SQRT2)};
+  const float narrow = static_cast<float>(map.options().narrow_cost_factor);
+  const float diagonal = static_cast<float>(M_SQRT2);
+  const float straight_cost[3] = {0.0f, 1.0f * 1.0f, 1.0f * narrow};
+  const float diagonal_cost[3] = {0.0f, diagonal * 1.0f, diagonal * narrow};
+  float* const d = distance_cells_.data();
   // Dial's bucket queue with buckets one cell wide: every step costs at least
   // one cell, so a cell popped from bucket k can only improve cells in later
   // buckets, and bucket k is final when its turn comes: exact, and O(cells).
-  // The ring spans the dearest step (a narrow diagonal) and the seeds' own
-  // distances (an escape path).
+  // A cell's distance is the least of its settled neighbours' distance plus
+  // the step, whatever order they were settled in. The ring spans the
+  // dearest step (a narrow diagonal) and the seeds' own distances (an escape
+  // path).
   float farthest_seed = 0.0f;
   for (const StartSeed& seed : start.seeds()) {
     farthest_seed = std::max(farthest_seed, seed.distance_m / res);
@@ -62,30 +65,44 @@ PathDistanceField::PathDistanceField(const PlanningMap& map, const StartRegion& 
   // [k + 1, k + ring), so its slot is slot + offset, wrapped once.
   for (int64_t k = 0, slot = 0; pending > 0; ++k, slot = slot + 1 == ring ? 0 : slot + 1) {
     std::vector<uint32_t>& current = bucket[slot];
+    // Written out for the eight neighbours: the loops and the relaxation as
+    // a call cost a third of the search.
+    const auto relax = [&](int64_t v, float dv) __attribute__((always_inline)) {
+      if (dv < d[v]) {
+        d[v] = dv;
+        int64_t to = slot + (static_cast<int64_t>(dv) - k);
+        if (to >= ring) to -= ring;
+        bucket[to].push_back(static_cast<uint32_t>(v));
+        ++pending;
+      }
+    };
+    const auto straight = [&](int64_t v, float du) __attribute__((always_inline)) {
+      const uint8_t cv = code[v];
+      if (cv != 0 && !(cv & kSettled)) relax(v, du + straight_cost[cv]);
+      return (cv & 3) != 0;  // traversable, settled or not
+    };
+    const auto diagonal = [&](int64_t v, float du) __attribute__((always_inline)) {
+      const uint8_t cv = code[v];
+      if (cv != 0 && !(cv & kSettled)) relax(v, du + diagonal_cost[cv]);
+    };
     for (size_t i = 0; i < current.size(); ++i) {
-      const uint32_t u = current[i];
+      const int64_t u = current[i];
       --pending;
       if (code[u] & kSettled) continue;
       code[u] |= kSettled;
       const float du = d[u];
-      for (int n = 0; n < 8; ++n) {
-        const int64_t v = u + step[n];
-        const uint8_t cv = code[v];
-        if (cv == 0 || (cv & kSettled)) continue;
-        if (n >= 4 && !((code[u + side_a[n]] & 3) && (code[u + side_b[n]] & 3))) continue;
-        const float dv = du + cost[n] * factor_of[cv];
-        if (dv < d[v]) {
-          d[v] = dv;
-          int64_t to = slot + (static_cast<int64_t>(dv) - k);
-          if (to >= ring) to -= ring;
-          bucket[to].push_back(static_cast<uint32_t>(v));
-          ++pending;
-        }
-      }
+      const bool east = straight(u + 1, du);
+      const bool west = straight(u - 1, du);
+      const bool north = straight(u + pw, du);
+      const bool south = straight(u - pw, du);
+      // A diagonal step passes between two orthogonal cells: both open.
+      if (east && north) diagonal(u + pw + 1, du);
+      if (east && south) diagonal(u - pw + 1, du);
+      if (west && north) diagonal(u + pw - 1, du);
+      if (west && south) diagonal(u - pw - 1, du);
     }
     current.clear();
   }
-  for (float& di : distance_m_) di *= res;  // the infinite stay infinite
   float nearest = kUnreachable;
   for (const StartSeed& seed : start.seeds()) {
     if (seed.distance_m < nearest) nearest = seed.distance_m, start_ = seed.cell;
@@ -98,7 +115,7 @@ std::optional<PathDistanceField::Reached> PathDistanceField::NearestReached(
   // point.
   std::optional<Reached> best;
   ForEachCellWithin(limits_, p, radius_m, [&](const grid::CellIndex& c) {
-    const float dist = distance_m_[Padded(c)];
+    const float dist = distance_cells_[Padded(c)] * res_;
     if (std::isfinite(dist) && (!best || dist < best->distance_m)) best = Reached{dist, c};
   });
   return best;

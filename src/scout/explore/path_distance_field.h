@@ -28,11 +28,11 @@ class PathDistanceField {
 
   // Returns the path distance in metres to the cell (kUnreachable if none).
   float at(int64_t flat) const {
-    return distance_m_[flat + 2 * (flat / limits_.width()) + padded_width() + 1];
+    return distance_cells_[flat + 2 * (flat / limits_.width()) + padded_width() + 1] * res_;
   }
   // As above; kUnreachable outside the map.
   float at(const grid::CellIndex& cell) const {
-    return limits_.Contains(cell) ? distance_m_[Padded(cell)] : kUnreachable;
+    return limits_.Contains(cell) ? distance_cells_[Padded(cell)] * res_ : kUnreachable;
   }
   // The seed cell nearest the robot by path, if any.
   const std::optional<grid::CellIndex>& start() const { return start_; }
@@ -53,10 +53,12 @@ class PathDistanceField {
   }
 
   grid::MapLimits limits_;
+  float res_;  // metres per cell
   std::optional<grid::CellIndex> start_;
-  // The grid padded by one unreachable cell on every side, so the search's
-  // inner loop needs no bounds checks (index with Padded).
-  std::vector<float> distance_m_;
+  // Path distances in cells (metres: times res_). The grid is padded by one
+  // unreachable cell on every side, so the search's inner loop needs no
+  // bounds checks (index with Padded).
+  std::vector<float> distance_cells_;
 };
 
 }  // namespace scout::explore

@@ -209,5 +209,59 @@ RC_GTEST_PROP(PathPlannerProperty, MatchesBruteForceOnRandomMazes, ()) {
   }
 }
 
+// The distance field's Dijkstra gives every cell the brute-force path length.
+RC_GTEST_PROP(PathDistanceFieldProperty, MatchesBruteForceOnRandomMazes, ()) {
+  const int w = *rc::gen::inRange(3, 12), h = *rc::gen::inRange(3, 12);
+  MapBuilder b(w, h, 0.1, grid::CellState::kFree);
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      if (*rc::gen::inRange(0, 100) < 30) b.Wall(x, y, x, y);
+    }
+  }
+  const grid::CellIndex s{*rc::gen::inRange(0, w), *rc::gen::inRange(0, h)};
+  b.Free(s.x, s.y, s.x, s.y);
+  const PlanningMap map(b.map(), PointRobot());
+  const PathDistanceField field(map, b.At(s.x, s.y));
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      const double truth = BruteForceDistance(b.map(), s, {x, y});
+      const float d = field.at(grid::CellIndex{x, y});
+      RC_ASSERT(std::isfinite(d) == std::isfinite(truth));
+      if (std::isfinite(truth)) RC_ASSERT(std::abs(d - truth) < 1e-4);
+    }
+  }
+}
+
+// CellsWithin tests only the rows and columns near the disc: it must return
+// exactly the cells a test of every cell finds, in row-major order, on grids
+// with origins and resolutions that do not line up with the points.
+RC_GTEST_PROP(CellsWithinProperty, EqualsTestingEveryCell, ()) {
+  const double res = *rc::gen::inRange(1, 20) * 0.01;
+  const int w = *rc::gen::inRange(1, 30), h = *rc::gen::inRange(1, 30);
+  const Eigen::Vector2d origin(*rc::gen::inRange(-1000, 1000) * 1e-3,
+                               *rc::gen::inRange(-1000, 1000) * 1e-3);
+  const grid::MapLimits limits(res, origin, w, h);
+  // Points on cell corners, edges and centres as well as anywhere.
+  const auto coordinate = [&](double o, int n) {
+    const int half_cells = *rc::gen::inRange(-4, 2 * n + 4);
+    const double jitter = *rc::gen::element(0.0, 0.0, 1e-12, -1e-12, 0.37);
+    return o + (half_cells * 0.5 + jitter) * res;
+  };
+  const Eigen::Vector2d p(coordinate(origin.x(), w), coordinate(origin.y(), h));
+  const double radius = *rc::gen::element(0.0, 0.5 * res, res, 1.5 * res, std::sqrt(2.0) * res,
+                                          *rc::gen::inRange(0, 3000) * 1e-3);
+  std::vector<grid::CellIndex> expected;
+  const grid::CellIndex centre = limits.CellContaining(p);
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      const grid::CellIndex c{x, y};
+      if (c == centre || (limits.CellCenter(c) - p).squaredNorm() <= radius * radius) {
+        expected.push_back(c);
+      }
+    }
+  }
+  RC_ASSERT(CellsWithin(limits, p, radius) == expected);
+}
+
 }  // namespace
 }  // namespace scout::explore

@@ -69,10 +69,21 @@ template <typename Visit>
 void ForEachCellWithin(const grid::MapLimits& limits, const Eigen::Vector2d& p, double radius_m,
                        Visit&& visit) {
   const grid::CellIndex centre = limits.CellContaining(p);
-  const int r = static_cast<int>(std::ceil(radius_m / limits.resolution())) + 1;
+  // The rows and columns whose centres can lie within the radius (with a
+  // millionth of a cell to spare for rounding): with the robot's small radii
+  // a square of 2 r / resolution + 3 cells per side tested mostly cells no
+  // centre of which is near.
+  const double res = limits.resolution();
+  const Eigen::Vector2d q = (p - limits.origin()) / res;
+  const double rc = radius_m / res;
+  constexpr double kSpare = 1e-6;
+  const int x0 = std::min(centre.x, static_cast<int>(std::ceil(q.x() - rc - 0.5 - kSpare)));
+  const int x1 = std::max(centre.x, static_cast<int>(std::floor(q.x() + rc - 0.5 + kSpare)));
+  const int y0 = std::min(centre.y, static_cast<int>(std::ceil(q.y() - rc - 0.5 - kSpare)));
+  const int y1 = std::max(centre.y, static_cast<int>(std::floor(q.y() + rc - 0.5 + kSpare)));
   const double r2 = radius_m * radius_m;
-  for (int y = centre.y - r; y <= centre.y + r; ++y) {
-    for (int x = centre.x - r; x <= centre.x + r; ++x) {
+  for (int y = y0; y <= y1; ++y) {
+    for (int x = x0; x <= x1; ++x) {
       const grid::CellIndex c{x, y};
       if (!limits.Contains(c)) continue;
       if (c == centre || (limits.CellCenter(c) - p).squaredNorm() <= r2) visit(c);
