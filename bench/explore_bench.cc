@@ -59,6 +59,26 @@ void BM_PlanningMap(benchmark::State& state) {
 }
 BENCHMARK(BM_PlanningMap)->Unit(benchmark::kMillisecond);
 
+// The planning map after a map update between two optimisations: the
+// previous one is reused and only the cells near a change are inflated
+// again (here a 4 m wide band of cells near the start turned occupied).
+void BM_PlanningMapReused(benchmark::State& state) {
+  const Office& o = TheOffice();
+  const auto trav = PlanningTraversability(o.options);
+  const PlanningMap previous(o.world.map, trav);
+  scout::grid::OccupancyMap changed = o.world.map;
+  const scout::grid::CellIndex start = changed.limits.CellContaining(o.world.start);
+  for (int dx = -40; dx <= 40; ++dx) {
+    const scout::grid::CellIndex c{start.x + dx, start.y + 10};
+    if (changed.limits.Contains(c)) changed.set(c, scout::grid::CellState::kOccupied);
+  }
+  for (auto _ : state) {
+    PlanningMap map(changed, trav, false, &previous);
+    benchmark::DoNotOptimize(map.traversable(0));
+  }
+}
+BENCHMARK(BM_PlanningMapReused)->Unit(benchmark::kMillisecond);
+
 void BM_PathDistanceField(benchmark::State& state) {
   const Office& o = TheOffice();
   const PlanningMap map(o.world.map, PlanningTraversability(o.options));

@@ -121,8 +121,10 @@ std::vector<Eigen::Vector2d> GoalManager::FrontierInBoundary(
 
 void GoalManager::RefreshMap(const ExploreInput& in) {
   if (map_ && !map_dirty_) return;
+  // Between optimisations the map changes only near the robot: the previous
+  // planning map is inflated again only there.
   map_ = std::make_unique<PlanningMap>(*in.map, traversability_,
-                                       planner_.options().clearance_weight > 0.0);
+                                       planner_.options().clearance_weight > 0.0, map_.get());
   // Stuck places close their passages first; the cells the robot has driven
   // over open again, so closing never seals it into a room it entered.
   stuck_places_.RetryChangedGoals(*map_, in.submaps);

@@ -232,6 +232,60 @@ RC_GTEST_PROP(PathDistanceFieldProperty, MatchesBruteForceOnRandomMazes, ()) {
   }
 }
 
+TEST(PlanningMapTest, ReusingThePreviousMapInflatesANewObstacleFully) {
+  MapBuilder b(40, 40, 0.05, grid::CellState::kFree);
+  const PlanningMap previous(b.map(), TraversabilityOptions{});
+  b.Wall(20, 20, 20, 20);
+  const PlanningMap reused(b.map(), TraversabilityOptions{}, false, &previous);
+  const PlanningMap fresh(b.map(), TraversabilityOptions{});
+  // 0.40 m inflation: blocked 8 cells out along the axes, not 9.
+  EXPECT_TRUE(reused.blocked(b.map().limits.FlatIndex({28, 20})));
+  EXPECT_FALSE(reused.blocked(b.map().limits.FlatIndex({29, 20})));
+  EXPECT_EQ(reused.traversability_codes(), fresh.traversability_codes());
+}
+
+// A planning map built from the previous one equals one built afresh, for
+// changes anywhere (near the edges too), none, or another lattice.
+RC_GTEST_PROP(PlanningMapProperty, ReusingThePreviousMapEqualsBuildingAfresh, ()) {
+  const int w = *rc::gen::inRange(1, 40), h = *rc::gen::inRange(1, 40);
+  // Sparse obstacles too, so a change reaches cells no other obstacle blocks.
+  const int occupied_per_mille = *rc::gen::element(5, 30, 200);
+  const auto random_state = [&] {
+    const int r = *rc::gen::inRange(0, 1000);
+    return r < occupied_per_mille
+               ? grid::CellState::kOccupied
+               : (r < 2 * occupied_per_mille ? grid::CellState::kUnknown : grid::CellState::kFree);
+  };
+  MapBuilder before(w, h, 0.05, grid::CellState::kFree);
+  grid::OccupancyMap first = before.map();
+  for (grid::CellState& c : first.cells) c = random_state();
+  TraversabilityOptions o;
+  o.unknown_traversable = *rc::gen::arbitrary<bool>();
+  o.narrow_margin_m = *rc::gen::element(0.1, 0.3);  // with and without narrow passages
+  const PlanningMap previous(first, o);
+  grid::OccupancyMap second = first;
+  if (*rc::gen::inRange(0, 5) == 0) {
+    // Another lattice: built afresh.
+    second.limits = grid::MapLimits(0.05, first.limits.origin() + Eigen::Vector2d(0.05, 0), w, h);
+  }
+  // Changes inside a random rectangle (possibly none).
+  const int x0 = *rc::gen::inRange(0, w), y0 = *rc::gen::inRange(0, h);
+  const int x1 = *rc::gen::inRange(x0, w), y1 = *rc::gen::inRange(y0, h);
+  const int changes = *rc::gen::inRange(0, 6);
+  for (int k = 0; k < changes; ++k) {
+    const int x = *rc::gen::inRange(x0, x1 + 1), y = *rc::gen::inRange(y0, y1 + 1);
+    second.cells[second.limits.FlatIndex({x, y})] = random_state();
+  }
+  const PlanningMap reused(second, o, false, &previous);
+  const PlanningMap fresh(second, o);
+  for (int64_t i = 0; i < second.limits.num_cells(); ++i) {
+    RC_ASSERT(reused.blocked(i) == fresh.blocked(i));
+  }
+  RC_ASSERT(reused.traversability_codes() == fresh.traversability_codes());
+  RC_ASSERT(reused.MaxStepFactor() == fresh.MaxStepFactor());
+  RC_ASSERT(reused.states() == fresh.states());
+}
+
 // CellsWithin tests only the rows and columns near the disc: it must return
 // exactly the cells a test of every cell finds, in row-major order, on grids
 // with origins and resolutions that do not line up with the points.

@@ -54,6 +54,7 @@ struct TraversabilityOptions {
   double driven_max_gap_m = 1.0;
 
   double inflation_radius_m() const { return robot_radius_m + safety_margin_m; }
+  friend bool operator==(const TraversabilityOptions&, const TraversabilityOptions&) = default;
 };
 
 // Throws std::invalid_argument naming the key of a bad value.
@@ -104,6 +105,14 @@ class PlanningMap {
   // occupied cell (one more EDT) for planners that penalise closeness.
   PlanningMap(const grid::OccupancyMap& map, const TraversabilityOptions& options,
               bool with_clearance = false);
+  // The same map, reusing 'previous' (null: none) where it can: when it was
+  // built with the same options from a map with the same limits, only the
+  // cells within reach of a cell whose state changed are inflated and coded
+  // again (the exploration loop's map changes near the robot between two
+  // optimisations). AllowDriven and CloseNarrow of 'previous' do not carry
+  // over. The result equals the constructor's above.
+  PlanningMap(const grid::OccupancyMap& map, const TraversabilityOptions& options,
+              bool with_clearance, const PlanningMap* previous);
 
   const grid::MapLimits& limits() const { return limits_; }
   const TraversabilityOptions& options() const { return options_; }
@@ -171,11 +180,22 @@ class PlanningMap {
                             Visit&& visit) const;
 
  private:
+  // Codes the states and levels in the cells of [x0, x1) x [y0, y1).
+  void Code(int x0, int x1, int y0, int y1);
+  // Inflates the cells of [x0, x1) x [y0, y1) again (levels exact: the cells
+  // within reach of them are read too) and codes them.
+  void Reinflate(int x0, int x1, int y0, int y1);
+  // Radii of the inflation levels (metres).
+  std::vector<double> InflationRadii() const;
+  // More than the largest radius, in cells.
+  int ReachCells() const;
+
   grid::MapLimits limits_;
   TraversabilityOptions options_;
   std::vector<grid::CellState> states_;
   bool has_narrow_ = false;
   std::vector<uint8_t> blocked_;      // inflation levels (grid::InflationLevels)
+  std::vector<uint8_t> base_codes_;   // traversability codes before AllowDriven/CloseNarrow
   std::vector<uint8_t> traversable_;  // traversability_codes()
   std::vector<uint8_t> closed_;       // empty until CloseNarrow
   std::vector<float> clearance_m_;
