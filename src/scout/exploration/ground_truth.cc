@@ -1,5 +1,6 @@
 #include "scout/exploration/ground_truth.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -50,6 +51,15 @@ GroundTruth::GroundTruth(const grid::OccupancyMap& unwalled_world, const std::st
   // not move by rounding at cell edges.
   const grid::MapLimits& world = unwalled_world.limits;
   for (grid::CellIndex& c : reachable_) c = {c.x - 1, c.y - 1};
+  for (const grid::CellIndex& c : reachable_) {
+    if (!runs_.empty() && runs_.back().y == c.y && runs_.back().x + runs_.back().length == c.x) {
+      ++runs_.back().length;
+    } else {
+      runs_.push_back({c.y, c.x, 1});
+    }
+  }
+  reachable_cells_ = static_cast<int64_t>(reachable_.size());
+  reachable_ = {};
   std::vector<int32_t> labels(static_cast<size_t>(world.num_cells()), 0);
   for (int y = 0; y < world.height(); ++y) {
     for (int x = 0; x < world.width(); ++x) {
@@ -146,24 +156,22 @@ void GroundTruth::ForEachReachable(const grid::OccupancyMap& map,
   const double inv_resolution = m.num_cells() > 0 ? 1.0 / m.resolution() : 0.0;
   const Eigen::Vector2d step =
       map_from_world.Rotate(Eigen::Vector2d(limits_.resolution(), 0.0)) * inv_resolution;
-  Eigen::Vector2d u = Eigen::Vector2d::Zero();
-  grid::CellIndex previous{-2, -2};
-  for (const grid::CellIndex& cell : reachable_) {
+  for (const Run& run : runs_) {
     if (m.num_cells() == 0) {
-      f(cell, false);
+      for (int x = run.x; x < run.x + run.length; ++x) f(grid::CellIndex{x, run.y}, false);
       continue;
     }
-    if (cell.y == previous.y && cell.x == previous.x + 1) {
-      u += step;
-    } else {
-      u = (map_from_world * limits_.CellCenter(cell) - m.origin()) * inv_resolution;
+    Eigen::Vector2d u =
+        (map_from_world * limits_.CellCenter({run.x, run.y}) - m.origin()) * inv_resolution;
+    for (int x = run.x; x < run.x + run.length; ++x) {
+      if (x > run.x) u += step;
+      const double fx = std::floor(u.x());
+      const double fy = std::floor(u.y());
+      const bool inside = fx >= 0.0 && fy >= 0.0 && fx < m.width() && fy < m.height();
+      f(grid::CellIndex{x, run.y},
+        inside && map.cells[static_cast<int64_t>(fy) * m.width() + static_cast<int64_t>(fx)] ==
+                      grid::CellState::kFree);
     }
-    previous = cell;
-    const double fx = std::floor(u.x());
-    const double fy = std::floor(u.y());
-    const bool inside = fx >= 0.0 && fy >= 0.0 && fx < m.width() && fy < m.height();
-    f(cell, inside && map.cells[static_cast<int64_t>(fy) * m.width() + static_cast<int64_t>(fx)] ==
-                          grid::CellState::kFree);
   }
 }
 
@@ -205,7 +213,9 @@ bool GroundTruth::DiscCanReach(const Eigen::Vector2d& from, const Eigen::Vector2
 
 std::vector<uint8_t> GroundTruth::ReachableMask() const {
   std::vector<uint8_t> mask(limits_.num_cells(), 0);
-  for (const grid::CellIndex& c : reachable_) mask[limits_.FlatIndex(c)] = 1;
+  for (const Run& run : runs_) {
+    std::fill_n(mask.begin() + limits_.FlatIndex({run.x, run.y}), run.length, 1);
+  }
   return mask;
 }
 
