@@ -101,13 +101,14 @@ void ExplorationLoop::FeedSensorsUntimed() {
   }
   if (inserted || slam_changed_) {
     // The newest node ties the local frame to the global one; optimisations
-    // move it, so it is re-read after every insertion or event.
-    const std::vector<slam::TimedPose> nodes = builder_->GetTrajectory();
-    if (!nodes.empty() && inserted) {
-      global_from_local_ = nodes.back().pose * last_local_.inverse();
+    // move it, so it is re-read after every insertion or event (alone: a
+    // copy of the whole trajectory per scan grew with the square of a run).
+    const std::optional<slam::TimedPose> newest = builder_->GetNewestNode();
+    if (newest && inserted) {
+      global_from_local_ = newest->pose * last_local_.inverse();
       newest_node_local_ = last_local_;
-    } else if (!nodes.empty()) {
-      global_from_local_ = nodes.back().pose * newest_node_local_.inverse();
+    } else if (newest) {
+      global_from_local_ = newest->pose * newest_node_local_.inverse();
     }
   }
 }

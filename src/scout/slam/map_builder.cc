@@ -88,6 +88,10 @@ void MapBuilder::Emit(events::SubmapEvent event) {
 
 std::vector<TimedPose> MapBuilder::GetTrajectory() const { return pose_graph_->GetNodePoses(); }
 
+std::optional<TimedPose> MapBuilder::GetNewestNode() const {
+  return pose_graph_->GetNewestNodePose();
+}
+
 std::vector<SubmapState> MapBuilder::GetSubmaps() const { return pose_graph_->GetSubmaps(); }
 
 std::vector<Constraint> MapBuilder::GetConstraints() const { return pose_graph_->GetConstraints(); }

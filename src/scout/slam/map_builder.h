@@ -6,6 +6,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <vector>
 
 #include "scout/events/submap_events.h"
@@ -76,6 +77,8 @@ class MapBuilder {
   // Returns the global pose of every node with its scan time, in node order
   // (the trajectory, e.g. for a TUM file).
   std::vector<TimedPose> GetTrajectory() const;
+  // The newest node of the trajectory, if any: its last element.
+  std::optional<TimedPose> GetNewestNode() const;
   // Returns poses and latest grids of all submaps (e.g. for the fused map).
   std::vector<SubmapState> GetSubmaps() const;
   // Returns every constraint of the pose graph (intra-submap and loop

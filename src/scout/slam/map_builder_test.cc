@@ -78,9 +78,20 @@ Recorded Drive(const SlamOptions& options, const SimulatedRun& run) {
   const auto start = std::chrono::steady_clock::now();
   {
     MapBuilder builder(options, [&](events::SubmapEvent e) { out.events.push_back(std::move(e)); });
+    EXPECT_FALSE(builder.GetNewestNode().has_value());
     for (size_t i = 0; i < run.scans.size(); ++i) {
       builder.AddOdometry(run.odometry[i]);
       builder.AddScan(run.scans[i]);
+      // The newest node is the trajectory's last, as optimisations move it
+      // (compared in synchronous mode, where no solve runs in between).
+      if (!options.pose_graph.synchronous) continue;
+      const std::vector<TimedPose> trajectory = builder.GetTrajectory();
+      const std::optional<TimedPose> newest = builder.GetNewestNode();
+      EXPECT_EQ(newest.has_value(), !trajectory.empty());
+      if (newest && !trajectory.empty()) {
+        EXPECT_EQ(newest->time_s, trajectory.back().time_s);
+        EXPECT_TRUE(newest->pose.translation() == trajectory.back().pose.translation());
+      }
     }
     builder.Finish();
     out.trajectory = builder.GetTrajectory();

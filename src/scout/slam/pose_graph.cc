@@ -464,6 +464,12 @@ std::vector<TimedPose> PoseGraph::GetNodePoses() const {
   return poses;
 }
 
+std::optional<TimedPose> PoseGraph::GetNewestNodePose() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (nodes_.empty()) return std::nullopt;
+  return TimedPose{nodes_.back().data.time_s, nodes_.back().data.global_pose};
+}
+
 std::vector<geometry::Rigid2d> PoseGraph::GetSubmapGlobalPoses() const {
   std::lock_guard<std::mutex> lock(mutex_);
   std::vector<geometry::Rigid2d> poses;

@@ -155,6 +155,8 @@ class PoseGraph {
 
   // Returns the global pose and scan time of every node, by node id.
   std::vector<TimedPose> GetNodePoses() const;
+  // Returns the newest node's, if any (without copying the others).
+  std::optional<TimedPose> GetNewestNodePose() const;
   // Returns the global pose of every submap, by submap id.
   std::vector<geometry::Rigid2d> GetSubmapGlobalPoses() const;
   // Returns poses and the latest grid of every submap, by submap id.
