@@ -56,6 +56,32 @@ TEST(GroundTruthTest, MappedAreaCountsOnlyFreeCellsWhereTheWorldIsFree) {
   EXPECT_LT(share, 0.6);
 }
 
+// A map that covers only part of the world, turned and shifted: MappedFreeM2
+// counts exactly the reachable cells whose centres the transform puts on a
+// free map cell (most of the world lies beyond this map, and is skipped).
+TEST(GroundTruthTest, APartialMapCountsTheCellsItCovers) {
+  const sim::World w = testing::SmallBuilding();
+  const GroundTruth truth = Truth(w);
+  grid::OccupancyMap part;
+  part.limits = grid::MapLimits(0.05, {1.013, 0.527}, 61, 47);
+  part.cells.assign(static_cast<size_t>(part.limits.num_cells()), CellState::kFree);
+  for (const geometry::Rigid2d& world_from_map :
+       {geometry::Rigid2d(0.0123, -0.0371, 0.05), geometry::Rigid2d(3.1, 2.2, -0.7),
+        geometry::Rigid2d(6.0, 4.0, 2.9)}) {
+    const geometry::Rigid2d map_from_world = world_from_map.inverse();
+    const std::vector<uint8_t> reachable = truth.ReachableMask();
+    int64_t expected = 0;
+    for (int64_t i = 0; i < truth.limits().num_cells(); ++i) {
+      if (!reachable[i]) continue;
+      const Eigen::Vector2d p =
+          map_from_world * truth.limits().CellCenter(truth.limits().CellOfFlatIndex(i));
+      expected += part.limits.Contains(part.limits.CellContaining(p));
+    }
+    EXPECT_GT(expected, 0);
+    EXPECT_DOUBLE_EQ(truth.MappedFreeM2(part, world_from_map), expected * 0.05 * 0.05);
+  }
+}
+
 // The mask says cell by cell what MappedFreeM2 counts.
 TEST(GroundTruthTest, CoverageMaskMarksTheReachableCellsMappedOrNot) {
   const sim::World w = testing::SmallBuilding();

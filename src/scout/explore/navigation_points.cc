@@ -51,39 +51,45 @@ std::vector<int> SplitByConnectivity(const PlanningMap& map,
   a = {std::max(a.x, 0), std::max(a.y, 0)};
   b = {std::min(b.x, limits.width() - 1), std::min(b.y, limits.height() - 1)};
   const int w = b.x - a.x + 1, h = b.y - a.y + 1;
-  const auto open = [&](const grid::CellIndex& c) {
-    return map.state(limits.FlatIndex(c)) != grid::CellState::kOccupied;
-  };
-
-  std::vector<int> region(w > 0 && h > 0 ? static_cast<size_t>(w) * h : 0, -1);
+  // The window's cells padded by one blocked cell on every side: kOpen until
+  // a flood labels them, kBlocked where occupied (so the flood needs no bounds
+  // checks).
+  constexpr int kOpen = -1, kBlocked = -2;
+  const int64_t pw = std::max(w, 0) + 2;
+  std::vector<int> region(static_cast<size_t>(pw) * (std::max(h, 0) + 2), kBlocked);
+  const std::vector<grid::CellState>& states = map.states();
+  for (int y = 0; w > 0 && y < h; ++y) {
+    const grid::CellState* row = &states[limits.FlatIndex({a.x, a.y + y})];
+    int* out = &region[(y + 1) * pw + 1];
+    for (int x = 0; x < w; ++x) out[x] = row[x] != grid::CellState::kOccupied ? kOpen : kBlocked;
+  }
   int next = 0;
   // A stack, not a queue: the region is the same in any order, and a vector
   // reuses its memory from flood to flood.
-  std::vector<grid::CellIndex> stack;
+  std::vector<int64_t> stack;
+  const int64_t step[4] = {1, -1, pw, -pw};
   for (size_t i = 0; i < points.size(); ++i) {
     const grid::CellIndex c = limits.CellContaining(points[i]);
     const bool in_window = c.x >= a.x && c.y >= a.y && c.x <= b.x && c.y <= b.y;
-    if (!in_window || !open(c)) {
+    const int64_t at = in_window ? (c.y - a.y + 1) * pw + (c.x - a.x + 1) : 0;
+    if (!in_window || region[at] == kBlocked) {
       label[i] = next++;
       continue;
     }
-    int& seed = region[(c.y - a.y) * w + (c.x - a.x)];
-    if (seed < 0) {
+    if (region[at] == kOpen) {
       // Flood the seed's region once; later points in it just read the label.
-      seed = next++;
-      stack.push_back(c);
+      const int seed = next++;
+      region[at] = seed;
+      stack.push_back(at);
       while (!stack.empty()) {
-        const grid::CellIndex u = stack.back();
+        const int64_t u = stack.back();
         stack.pop_back();
-        for (int k = 0; k < 4; ++k) {
-          const grid::CellIndex v{u.x + kNeighbourOffsets[k][0], u.y + kNeighbourOffsets[k][1]};
-          if (v.x < a.x || v.y < a.y || v.x > b.x || v.y > b.y || !open(v)) continue;
-          int& rv = region[(v.y - a.y) * w + (v.x - a.x)];
-          if (rv < 0) rv = seed, stack.push_back(v);
+        for (const int64_t d : step) {
+          if (region[u + d] == kOpen) region[u + d] = seed, stack.push_back(u + d);
         }
       }
     }
-    label[i] = seed;
+    label[i] = region[at];
   }
   return label;
 }

@@ -139,6 +139,78 @@ TEST(NavigationPointsTest, ConnectivityLeaksNeitherThroughDiagonalWalls) {
   EXPECT_EQ(label[0], label[2]);
 }
 
+// The connectivity split labels points as an independent flood of each
+// point's 4-connected region of non-occupied cells inside the window would:
+// the same label exactly when connected, numbered by first appearance, and
+// a label of its own for a point on an occupied cell or outside the window.
+RC_GTEST_PROP(NavigationPointsProperty, ConnectivitySplitMatchesAFloodPerPoint, ()) {
+  const int w = *rc::gen::inRange(1, 25), h = *rc::gen::inRange(1, 25);
+  MapBuilder b(w, h, 0.1, grid::CellState::kFree);
+  const int occupied_percent = *rc::gen::inRange(0, 60);
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      if (*rc::gen::inRange(0, 100) < occupied_percent) b.Wall(x, y, x, y);
+    }
+  }
+  const PlanningMap map(b.map(), TraversabilityOptions{});
+  const grid::MapLimits& limits = map.limits();
+  std::vector<Eigen::Vector2d> points;
+  const int n = *rc::gen::inRange(1, 12);
+  for (int i = 0; i < n; ++i) {
+    // Some points beyond the map too.
+    points.emplace_back(*rc::gen::inRange(-5, 10 * w + 5) * 0.01 * 1.0 + 0.003,
+                        *rc::gen::inRange(-5, 10 * h + 5) * 0.01 * 1.0 + 0.003);
+  }
+  const double margin_m = *rc::gen::element(0.0, 0.1, 0.35, 5.0);
+  const std::vector<int> label = SplitByConnectivity(map, points, margin_m);
+
+  // The oracle: the window as SplitByConnectivity defines it, and per point
+  // the set of cells its flood reaches.
+  Eigen::Vector2d lo = points[0], hi = points[0];
+  for (const Eigen::Vector2d& p : points) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  grid::CellIndex a = limits.CellContaining(lo - Eigen::Vector2d(margin_m, margin_m));
+  grid::CellIndex c = limits.CellContaining(hi + Eigen::Vector2d(margin_m, margin_m));
+  a = {std::max(a.x, 0), std::max(a.y, 0)};
+  c = {std::min(c.x, w - 1), std::min(c.y, h - 1)};
+  const auto inside = [&](const grid::CellIndex& q) {
+    return q.x >= a.x && q.y >= a.y && q.x <= c.x && q.y <= c.y &&
+           map.state(limits.FlatIndex(q)) != grid::CellState::kOccupied;
+  };
+  const auto flood = [&](const grid::CellIndex& start) {
+    std::set<std::pair<int, int>> seen;
+    if (!inside(start)) return seen;
+    std::vector<grid::CellIndex> todo = {start};
+    seen.insert({start.x, start.y});
+    while (!todo.empty()) {
+      const grid::CellIndex u = todo.back();
+      todo.pop_back();
+      for (const auto& d : {std::pair{1, 0}, std::pair{-1, 0}, std::pair{0, 1}, std::pair{0, -1}}) {
+        const grid::CellIndex v{u.x + d.first, u.y + d.second};
+        if (inside(v) && seen.insert({v.x, v.y}).second) todo.push_back(v);
+      }
+    }
+    return seen;
+  };
+  std::vector<int> expected(points.size());
+  int next = 0;
+  for (size_t i = 0; i < points.size(); ++i) {
+    const grid::CellIndex ci = limits.CellContaining(points[i]);
+    expected[i] = -1;
+    if (inside(ci)) {
+      const auto region = flood(ci);
+      for (size_t j = 0; j < i; ++j) {
+        const grid::CellIndex cj = limits.CellContaining(points[j]);
+        if (region.count({cj.x, cj.y})) {
+          expected[i] = expected[j];
+          break;
+        }
+      }
+    }
+    if (expected[i] < 0) expected[i] = next++;
+  }
+  RC_ASSERT(label == expected);
+}
+
 TEST(NavigationPointsTest, OptionsAreValidatedByName) {
   NavigationPointOptions o;
   o.mean_shift.bandwidth_m = 0.0;
