@@ -6,6 +6,8 @@
 #include <limits>
 #include <numeric>
 #include <unordered_map>
+#include <utility>
+#include <vector>
 
 #include "scout/explore/option_check.h"
 
@@ -24,12 +26,26 @@ int64_t Key(int64_t ix, int64_t iy) { return (ix << 32) ^ (iy & 0xffffffff); }
 
 // Points bucketed in square cells of side 'cell_m' for radius queries with
 // radius <= cell_m (only the 3x3 block around a position can hold neighbours).
+// Each bucket's points are stored together, in index order, so a query
+// reads them in sequence (mean-shift's queries were a tenth of a museum run's
+// goal selection); visit(i, point) sees them in the order of the buckets
+// below, and within a bucket by index.
 class HashGrid {
  public:
-  HashGrid(const std::vector<Eigen::Vector2d>& points, double cell_m)
-      : points_(points), cell_m_(cell_m) {
-    for (int i = 0; i < static_cast<int>(points.size()); ++i) {
-      buckets_[KeyOf(points[i])].push_back(i);
+  HashGrid(const std::vector<Eigen::Vector2d>& points, double cell_m) : cell_m_(cell_m) {
+    std::vector<std::pair<int64_t, int>> keyed;
+    keyed.reserve(points.size());
+    for (int i = 0; i < static_cast<int>(points.size()); ++i)
+      keyed.push_back({KeyOf(points[i]), i});
+    std::stable_sort(keyed.begin(), keyed.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (size_t k = 0; k < keyed.size(); ++k) {
+      if (k == 0 || keyed[k].first != keyed[k - 1].first) {
+        buckets_[keyed[k].first] = {static_cast<int>(k), static_cast<int>(k)};
+      }
+      ++buckets_[keyed[k].first].second;
+      index_.push_back(keyed[k].second);
+      points_.push_back(points[keyed[k].second]);
     }
   }
   template <typename Visit>
@@ -40,8 +56,8 @@ class HashGrid {
       for (int64_t x = cx - 1; x <= cx + 1; ++x) {
         const auto it = buckets_.find(Key(x, y));
         if (it == buckets_.end()) continue;
-        for (int i : it->second) {
-          if ((points_[i] - p).squaredNorm() <= r2) visit(i);
+        for (int k = it->second.first; k < it->second.second; ++k) {
+          if ((points_[k] - p).squaredNorm() <= r2) visit(index_[k], points_[k]);
         }
       }
     }
@@ -51,9 +67,10 @@ class HashGrid {
   int64_t Floor(double v) const { return static_cast<int64_t>(std::floor(v / cell_m_)); }
   int64_t KeyOf(const Eigen::Vector2d& p) const { return Key(Floor(p.x()), Floor(p.y())); }
 
-  const std::vector<Eigen::Vector2d>& points_;
   double cell_m_;
-  std::unordered_map<int64_t, std::vector<int>> buckets_;
+  std::unordered_map<int64_t, std::pair<int, int>> buckets_;  // key -> [begin, end) below
+  std::vector<int> index_;                                    // by bucket, then index
+  std::vector<Eigen::Vector2d> points_;                       // points_[k] = input[index_[k]]
 };
 
 std::vector<Eigen::Vector2d> Seeds(const std::vector<Eigen::Vector2d>& points, double bin_m) {
@@ -102,7 +119,7 @@ MeanShiftClusters MeanShift(const std::vector<Eigen::Vector2d>& points,
     for (int it = 0; it < options.max_iterations; ++it) {
       Eigen::Vector2d sum = Eigen::Vector2d::Zero();
       int n = 0;
-      grid.ForEachWithin(x, h, [&](int i) { sum += points[i], ++n; });
+      grid.ForEachWithin(x, h, [&](int, const Eigen::Vector2d& q) { sum += q, ++n; });
       if (n == 0) break;
       const Eigen::Vector2d next = sum / n;
       const double shift = (next - x).norm();
@@ -137,7 +154,7 @@ MeanShiftClusters MeanShift(const std::vector<Eigen::Vector2d>& points,
       const double d2 = (out.centres[c] - points[i]).squaredNorm();
       if (d2 < best_d2 || (d2 == best_d2 && c < best)) best_d2 = d2, best = c;
     };
-    centre_grid.ForEachWithin(points[i], h, consider);
+    centre_grid.ForEachWithin(points[i], h, [&](int c, const Eigen::Vector2d&) { consider(c); });
     if (best < 0) {
       for (int c = 0; c < static_cast<int>(out.centres.size()); ++c) consider(c);
     }
