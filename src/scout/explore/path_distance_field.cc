@@ -34,8 +34,8 @@ PathDistanceField::PathDistanceField(const PlanningMap& map, const StartRegion& 
   static_assert(PlanningMap::kNarrow == 2);
   const float narrow = static_cast<float>(map.options().narrow_cost_factor);
   const float diagonal = static_cast<float>(M_SQRT2);
-  const float straight_cost[3] = {0.0f, 1.0f * 1.0f, 1.0f * narrow};
-  const float diagonal_cost[3] = {0.0f, diagonal * 1.0f, diagonal * narrow};
+  const float straight_cost[3] = {0.0f, 1.0f, narrow};
+  const float diagonal_cost[3] = {0.0f, diagonal, diagonal * narrow};
   float* const d = distance_cells_.data();
   // Dial's bucket queue with buckets one cell wide: every step costs at least
   // one cell, so a cell popped from bucket k can only improve cells in later

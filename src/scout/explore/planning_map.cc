@@ -105,7 +105,7 @@ int PlanningMap::ReachCells() const {
 }
 
 void PlanningMap::Code(int x0, int x1, int y0, int y1) {
-  const bool narrow = options_.narrow_margin_m < options_.safety_margin_m;
+  const bool narrow = InflationRadii().size() > 1;  // the narrow-passage tier is on
   for (int y = y0; y < y1; ++y) {
     for (int64_t i = int64_t{y} * limits_.width() + x0, end = i + (x1 - x0); i < end; ++i) {
       const bool passable =
