@@ -185,14 +185,20 @@ TEST(PathPlannerTest, ClearancePenaltyKeepsAwayFromWalls) {
                std::invalid_argument);
 }
 
-RC_GTEST_PROP(PathPlannerProperty, MatchesBruteForceOnRandomMazes, ()) {
-  const int w = *rc::gen::inRange(4, 16), h = *rc::gen::inRange(4, 16);
+// A w x h map (0.1 m cells) with about 30 % of its cells occupied at random.
+MapBuilder RandomMaze(int w, int h) {
   MapBuilder b(w, h, 0.1, grid::CellState::kFree);
   for (int y = 0; y < h; ++y) {
     for (int x = 0; x < w; ++x) {
       if (*rc::gen::inRange(0, 100) < 30) b.Wall(x, y, x, y);
     }
   }
+  return b;
+}
+
+RC_GTEST_PROP(PathPlannerProperty, MatchesBruteForceOnRandomMazes, ()) {
+  const int w = *rc::gen::inRange(4, 16), h = *rc::gen::inRange(4, 16);
+  MapBuilder b = RandomMaze(w, h);
   const grid::CellIndex s{*rc::gen::inRange(0, w), *rc::gen::inRange(0, h)};
   const grid::CellIndex t{*rc::gen::inRange(0, w), *rc::gen::inRange(0, h)};
   b.Free(s.x, s.y, s.x, s.y).Free(t.x, t.y, t.x, t.y);
@@ -212,12 +218,7 @@ RC_GTEST_PROP(PathPlannerProperty, MatchesBruteForceOnRandomMazes, ()) {
 // The distance field's Dijkstra gives every cell the brute-force path length.
 RC_GTEST_PROP(PathDistanceFieldProperty, MatchesBruteForceOnRandomMazes, ()) {
   const int w = *rc::gen::inRange(3, 12), h = *rc::gen::inRange(3, 12);
-  MapBuilder b(w, h, 0.1, grid::CellState::kFree);
-  for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) {
-      if (*rc::gen::inRange(0, 100) < 30) b.Wall(x, y, x, y);
-    }
-  }
+  MapBuilder b = RandomMaze(w, h);
   const grid::CellIndex s{*rc::gen::inRange(0, w), *rc::gen::inRange(0, h)};
   b.Free(s.x, s.y, s.x, s.y);
   const PlanningMap map(b.map(), PointRobot());
