@@ -157,20 +157,17 @@ void GroundTruth::ForEachReachable(const grid::OccupancyMap& map,
   const Eigen::Vector2d step =
       map_from_world.Rotate(Eigen::Vector2d(limits_.resolution(), 0.0)) * inv_resolution;
   for (const Run& run : runs_) {
-    if (m.num_cells() == 0) {
-      for (int x = run.x; x < run.x + run.length; ++x) f(grid::CellIndex{x, run.y}, false);
-      continue;
-    }
     Eigen::Vector2d u =
         (map_from_world * limits_.CellCenter({run.x, run.y}) - m.origin()) * inv_resolution;
-    // The positions along a run lie on a segment: when both ends lie beyond
+    // No map maps nothing. The positions along a run lie on a segment: when both ends lie beyond
     // the same edge of the map (by a cell, far more than the stepping's
     // rounding), no cell of the run is inside. Early in a run most of the
     // world is beyond the map.
     const Eigen::Vector2d end = u + (run.length - 1) * step;
     const double w = m.width(), h = m.height();
-    if ((u.x() < -1.0 && end.x() < -1.0) || (u.y() < -1.0 && end.y() < -1.0) ||
-        (u.x() > w + 1.0 && end.x() > w + 1.0) || (u.y() > h + 1.0 && end.y() > h + 1.0)) {
+    if (m.num_cells() == 0 || (u.x() < -1.0 && end.x() < -1.0) ||
+        (u.y() < -1.0 && end.y() < -1.0) || (u.x() > w + 1.0 && end.x() > w + 1.0) ||
+        (u.y() > h + 1.0 && end.y() > h + 1.0)) {
       for (int x = run.x; x < run.x + run.length; ++x) f(grid::CellIndex{x, run.y}, false);
       continue;
     }
