@@ -15,6 +15,10 @@ constexpr double kSafety_m = 1e-5;
 
 Eigen::Vector2d RefOf(const auto& e) { return {e.ref_x_m, e.ref_y_m}; }
 
+bool SameBox(const geometry::Box2d& a, const geometry::Box2d& b) {
+  return a.min == b.min && a.max == b.max;
+}
+
 }  // namespace
 
 geometry::Rigid2d ExactStrategy::Relative(int i, int j) const {
@@ -279,6 +283,7 @@ void ExactStrategy::EnsureSize(int n) {
     witness_.emplace_back();
     discs_.emplace_back();
     point_stamp_.emplace_back();
+    seen_.emplace_back();
     submap_stamp_.push_back(0);
   }
 }
@@ -294,8 +299,33 @@ int64_t ExactStrategy::num_entries() const {
 UpdateCost ExactStrategy::OnOptimized(const std::vector<geometry::Rigid2d>&) {
   const Stopwatch stopwatch;
   BeginUpdate();
-  EnsureSize(catalog_.size());
-  for (int i = 0; i < catalog_.size(); ++i) UpdateWatchesOf(i);
+  const int n = catalog_.size();
+  EnsureSize(n);
+  // UpdateWatchesOf(i) has work only if i's placement changed (pose, grid box
+  // or points box), if a submap it watches changed (its entries may need a
+  // check, or the pair no longer meets), or if a changed submap's box now
+  // meets i's points (a new watch). Every
+  // other submap's watches are up to date, and the call would leave them as
+  // they are: only the affected ones are updated, in the same (ascending)
+  // order, so the answers and the counts equal updating all of them.
+  affected_.assign(n, 0);
+  for (int m = 0; m < n; ++m) {
+    const SubmapRecord& r = catalog_.submap(m);
+    SeenPlacement& seen = seen_[m];
+    const geometry::Box2d points_box = catalog_.GlobalPointsBox(m);
+    if (seen.valid && seen.pose_version == r.pose_version && SameBox(seen.box, r.global_box) &&
+        SameBox(seen.points_box, points_box)) {
+      continue;
+    }
+    seen = {r.pose_version, r.global_box, points_box, true};
+    affected_[m] = 1;
+    for (const int i : watchers_[m]) affected_[i] = 1;
+    // Points lie inside their grid, so the grids' boxes find every candidate.
+    for (const int i : catalog_.index().Intersecting(r.global_box)) affected_[i] = 1;
+  }
+  for (int i = 0; i < n; ++i) {
+    if (affected_[i]) UpdateWatchesOf(i);
+  }
   return EndUpdate(stopwatch.ElapsedUs());
 }
 

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "scout/frontier/update_strategy.h"
+#include "scout/geometry/box.h"
 
 namespace scout::frontier {
 
@@ -139,6 +140,17 @@ class ExactStrategy : public UpdateStrategy {
   static constexpr int32_t kLost = -2;
   std::vector<std::vector<int32_t>> witness_;
   std::vector<PointsDisc> discs_;  // by submap
+  // What each submap looked like to the last optimisation round: a submap
+  // whose pose, grid box and points box are all unchanged since, and none of
+  // whose neighbours changed, has nothing to update (see OnOptimized).
+  struct SeenPlacement {
+    uint64_t pose_version = 0;
+    geometry::Box2d box;
+    geometry::Box2d points_box;
+    bool valid = false;
+  };
+  std::vector<SeenPlacement> seen_;
+  std::vector<uint8_t> affected_;  // scratch of OnOptimized
   std::vector<uint32_t> lost_;     // points (of the submap being updated) without a witness
   // Distinct points / submaps touched in the current update.
   std::vector<std::vector<uint32_t>> point_stamp_;

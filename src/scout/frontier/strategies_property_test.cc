@@ -136,5 +136,34 @@ TEST(Strategies, ScenariosExerciseBothAnswersAndInexactStrategiesErr) {
   EXPECT_GT(inexact_errors, 0);
 }
 
+// Exact updates only the submaps an optimisation can affect. A submap that
+// does not move must still be updated when the one submap that covered its
+// frontier moves away, and again when it moves back over it.
+TEST(Strategies, ExactUpdatesASubmapThatStaysWhenItsCoverMovesAwayAndBack) {
+  RandomScenario s(11, {});
+  FrontierOptions options;
+  options.inflation_radius_m = 0.1;
+  FrontierEngine engine(options, {"full", "exact"}, true);
+  const geometry::Rigid2d pose = s.TruePose();
+  // Submap 1 sees farther around the same place: it covers 0's frontier ring.
+  engine.Apply(s.MakeSubmap(0, pose, 1.0));
+  engine.Apply(s.MakeSubmap(1, pose, 2.5));
+  const geometry::Rigid2d away(pose.x() + 40.0, pose.y(), pose.theta());
+  const auto frontier_points_of_0 = [&] {
+    const std::vector<uint8_t>& full = engine.strategy("full").answers(0);
+    EXPECT_EQ(engine.strategy("exact").answers(0), full);
+    return std::count(full.begin(), full.end(), 1);
+  };
+  engine.Apply(events::Optimized{{pose, pose}});
+  const auto covered = frontier_points_of_0();
+  engine.Apply(events::Optimized{{pose, away}});
+  const auto uncovered = frontier_points_of_0();
+  engine.Apply(events::Optimized{{pose, pose}});
+  EXPECT_EQ(frontier_points_of_0(), covered);
+  // Submap 0's frontier is hidden while 1 covers it, and its own once 1 left.
+  EXPECT_GT(uncovered, covered);
+  EXPECT_EQ(uncovered, static_cast<int64_t>(engine.catalog().submap(0).frontier.points_m.size()));
+}
+
 }  // namespace
 }  // namespace scout::frontier
