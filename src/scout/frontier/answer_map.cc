@@ -16,11 +16,16 @@ using grid::CellIndex;
 // one for an exact margin; beyond, the distance transform bounds the margin.
 constexpr int kWindowRadius = 2;
 
-// Distance from 'q' to the closed axis-aligned square [lo, hi].
-double DistanceToSquare(const Eigen::Vector2d& q, const Eigen::Vector2d& lo,
-                        const Eigen::Vector2d& hi) {
+// Distance from 'q' to the closed axis-aligned square [lo, hi], if it is below
+// 'bound'; otherwise some value >= 'bound'. std::hypot is exact when a side is
+// 0 and never below the larger side, so both shortcuts return what it would.
+double DistanceToSquareBelow(const Eigen::Vector2d& q, const Eigen::Vector2d& lo,
+                             const Eigen::Vector2d& hi, double bound) {
   const double dx = std::max({lo.x() - q.x(), 0.0, q.x() - hi.x()});
   const double dy = std::max({lo.y() - q.y(), 0.0, q.y() - hi.y()});
+  if (dx == 0.0) return dy;
+  if (dy == 0.0) return dx;
+  if (std::max(dx, dy) >= bound) return bound;
   return std::hypot(dx, dy);
 }
 
@@ -121,8 +126,8 @@ double AnswerMap::WindowMargin(const Eigen::Vector2d& q, const CellIndex& c, boo
       const CellIndex n{c.x + dx, c.y + dy};
       if (ObjectsAtCell(n) == objects) continue;
       const Eigen::Vector2d centre = limits_.CellCenter(n);
-      margin = std::min(
-          margin, DistanceToSquare(q, centre.array() - 0.5 * res, centre.array() + 0.5 * res));
+      margin = std::min(margin, DistanceToSquareBelow(q, centre.array() - 0.5 * res,
+                                                      centre.array() + 0.5 * res, margin));
     }
   }
   return margin;
