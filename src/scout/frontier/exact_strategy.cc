@@ -304,10 +304,10 @@ UpdateCost ExactStrategy::OnOptimized(const std::vector<geometry::Rigid2d>&) {
   // UpdateWatchesOf(i) has work only if i's placement changed (pose, grid box
   // or points box), if a submap it watches changed (its entries may need a
   // check, or the pair no longer meets), or if a changed submap's box now
-  // meets i's points (a new watch). Every
-  // other submap's watches are up to date, and the call would leave them as
-  // they are: only the affected ones are updated, in the same (ascending)
-  // order, so the answers and the counts equal updating all of them.
+  // meets i's points (a new watch). Every other submap's watches are up to
+  // date, and the call would leave them as they are: only the affected ones
+  // are updated, in the same (ascending) order, so the answers and the counts
+  // equal updating all of them.
   affected_.assign(n, 0);
   for (int m = 0; m < n; ++m) {
     const SubmapRecord& r = catalog_.submap(m);

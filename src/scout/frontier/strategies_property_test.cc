@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+#include <algorithm>
+
 #include "scout/frontier/frontier_engine.h"
 #include "scout/frontier/random_scenario.h"
 
