@@ -159,10 +159,10 @@ void GroundTruth::ForEachReachable(const grid::OccupancyMap& map,
   for (const Run& run : runs_) {
     Eigen::Vector2d u =
         (map_from_world * limits_.CellCenter({run.x, run.y}) - m.origin()) * inv_resolution;
-    // No map maps nothing. The positions along a run lie on a segment: when both ends lie beyond
-    // the same edge of the map (by a cell, far more than the stepping's
-    // rounding), no cell of the run is inside. Early in a run most of the
-    // world is beyond the map.
+    // An empty map covers no cell of the run. Otherwise the positions along
+    // a run lie on a segment: when both ends lie beyond the same edge of the
+    // map (by a cell, far more than the stepping's rounding), no cell of the
+    // run is inside. Early in a run most of the world is beyond the map.
     const Eigen::Vector2d end = u + (run.length - 1) * step;
     const double w = m.width(), h = m.height();
     if (m.num_cells() == 0 || (u.x() < -1.0 && end.x() < -1.0) ||
