@@ -56,6 +56,18 @@ TEST_F(ScoutCli, BadCommandLineExitsWithTwo) {
   EXPECT_EQ(RunScout("frontier-bench --seed notanumber").exit_code, 2);
 }
 
+TEST_F(ScoutCli, NegativeSeedIsAnErrorNotAWrappedNumber) {
+  const std::string o = " --out " + (dir_ / "out").string();
+  for (const std::string command : {"frontier-bench", "explore", "replay no-such.log"}) {
+    const Result r = RunScout(command + " --seed -3" + o);
+    EXPECT_EQ(r.exit_code, 2) << command;
+    EXPECT_NE(r.output.find("--seed"), std::string::npos) << command << ": " << r.output;
+    EXPECT_NE(r.output.find("expected a non-negative integer, got '-3'"), std::string::npos)
+        << command << ": " << r.output;
+  }
+  EXPECT_FALSE(fs::exists(dir_ / "out"));
+}
+
 TEST_F(ScoutCli, BadInputsNameWhatIsWrongAndLeaveNoOutputs) {
   const fs::path out = dir_ / "out";
   const std::string o = " --out " + out.string();

@@ -5,6 +5,16 @@
 
 namespace scout::apps {
 
+CLI::Validator NonNegativeInteger() {
+  return CLI::Validator(
+      [](std::string& value) -> std::string {
+        const bool digits =
+            !value.empty() && value.find_first_not_of("0123456789") == std::string::npos;
+        return digits ? std::string() : "expected a non-negative integer, got '" + value + "'";
+      },
+      "UINT");
+}
+
 io::ScoutConfig LoadConfigOrDefaults(const std::string& config_file) {
   return config_file.empty() ? io::ScoutConfig{} : io::LoadConfig(config_file);
 }

@@ -1,6 +1,7 @@
 #ifndef SCOUT_APPS_SCOUT_COMMAND_UTIL_H_
 #define SCOUT_APPS_SCOUT_COMMAND_UTIL_H_
 
+#include <CLI/CLI.hpp>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -13,6 +14,10 @@ namespace scout::apps {
 // Returns the options of 'config_file', or the built-in defaults when it is
 // empty. Throws InputError for a bad file (see io::LoadConfig).
 io::ScoutConfig LoadConfigOrDefaults(const std::string& config_file);
+
+// Accepts decimal digits only. CLI11 parses "-3" into an unsigned seed as
+// 2^64 - 3 without complaint; a seed the user mistyped must be an error.
+CLI::Validator NonNegativeInteger();
 
 // Splits a comma-separated list, dropping empty items.
 std::vector<std::string> SplitList(const std::string& list);

@@ -203,7 +203,8 @@ CLI::App* AddExploreCommand(CLI::App& app, ExploreArgs* args) {
   cmd->add_option("--world-size", args->world_size,
                   "outer extent of a generated world, W or WxH metres (default: the generator's)");
   cmd->add_option("--seed", args->seed, "seed of the generated world and the sensor noise")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(NonNegativeInteger());
   cmd->add_option("--out", args->out_dir, "output directory")->capture_default_str();
   cmd->add_option("--config", args->config_file, "YAML options file (see config/default.yaml)");
   cmd->add_option("--strategy", args->strategy, "frontier update strategy")

@@ -162,7 +162,8 @@ CLI::App* AddReplayCommand(CLI::App& app, ReplayArgs* args) {
       ->capture_default_str()
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--seed", args->seed, "seed of the injected odometry noise")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(NonNegativeInteger());
   cmd->add_option("--max-scans", args->max_scans, "stop after this many scans (0 = all)")
       ->capture_default_str()
       ->check(CLI::NonNegativeNumber);
