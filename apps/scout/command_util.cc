@@ -1,5 +1,8 @@
 #include "apps/scout/command_util.h"
 
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
 #include <iomanip>
 #include <sstream>
 
@@ -17,6 +20,20 @@ CLI::Validator NonNegativeInteger() {
 
 io::ScoutConfig LoadConfigOrDefaults(const std::string& config_file) {
   return config_file.empty() ? io::ScoutConfig{} : io::LoadConfig(config_file);
+}
+
+CLI::Validator NonNegativeFiniteNumber() {
+  return CLI::Validator(
+      [](std::string& value) -> std::string {
+        const char* begin = value.c_str();
+        char* end = nullptr;
+        errno = 0;
+        const double x = std::strtod(begin, &end);
+        const bool ok = !value.empty() && end == begin + value.size() && errno == 0 &&
+                        std::isfinite(x) && x >= 0.0;
+        return ok ? std::string() : "expected a finite number >= 0, got '" + value + "'";
+      },
+      "NUMBER");
 }
 
 std::vector<std::string> SplitList(const std::string& list) {

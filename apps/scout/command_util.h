@@ -19,6 +19,10 @@ io::ScoutConfig LoadConfigOrDefaults(const std::string& config_file);
 // 2^64 - 3 without complaint; a seed the user mistyped must be an error.
 CLI::Validator NonNegativeInteger();
 
+// Accepts a finite decimal number >= 0. CLI::NonNegativeNumber lets "nan"
+// through (no comparison with NaN fails) and prints its range as 0 to DBL_MAX.
+CLI::Validator NonNegativeFiniteNumber();
+
 // Splits a comma-separated list, dropping empty items.
 std::vector<std::string> SplitList(const std::string& list);
 

@@ -188,8 +188,15 @@ TEST_F(ReplayCli, BadInputIsAClearErrorWithoutPartialOutputs) {
   EXPECT_NE(r.output.find("garbage.log"), std::string::npos) << r.output;
   EXPECT_FALSE(fs::exists(out / "summary.json"));
 
-  r = RunScout("replay " + Log() + " --odom-noise -1 --out " + out.string());
-  EXPECT_EQ(r.exit_code, 2) << r.output;
+  // Out of range, not a number, or one that no comparison rejects (NaN).
+  for (const std::string bad : {"--odom-noise -1", "--odom-noise nan", "--odom-noise inf",
+                                "--odom-noise 0.5x", "--max-scans 1.5", "--max-scans -2"}) {
+    r = RunScout("replay " + Log() + " " + bad + " --out " + out.string());
+    EXPECT_EQ(r.exit_code, 2) << bad << ": " << r.output;
+    EXPECT_NE(r.output.find(bad.substr(0, bad.find(' ')) + ": expected"), std::string::npos)
+        << bad << ": " << r.output;
+    EXPECT_FALSE(fs::exists(out / "summary.json")) << bad;
+  }
   r = RunScout("replay " + Log() + " --strategies exact,magic --out " + out.string());
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("magic"), std::string::npos) << r.output;

@@ -160,13 +160,13 @@ CLI::App* AddReplayCommand(CLI::App& app, ReplayArgs* args) {
                   "scale of the wheel-odometry drift injected into the dataset's odometry (0 = "
                   "none, 1 = typical)")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(NonNegativeFiniteNumber());
   cmd->add_option("--seed", args->seed, "seed of the injected odometry noise")
       ->capture_default_str()
       ->check(NonNegativeInteger());
   cmd->add_option("--max-scans", args->max_scans, "stop after this many scans (0 = all)")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(NonNegativeInteger());
   cmd->add_flag("--synchronous", args->synchronous,
                 "run global SLAM in the calling thread (deterministic; overrides the config)");
   cmd->add_flag("--quiet", args->quiet, "print only the final summary");
