@@ -15,7 +15,7 @@ CLI::Validator NonNegativeInteger() {
             !value.empty() && value.find_first_not_of("0123456789") == std::string::npos;
         return digits ? std::string() : "expected a non-negative integer, got '" + value + "'";
       },
-      "UINT");
+      "NONNEGATIVE");
 }
 
 io::ScoutConfig LoadConfigOrDefaults(const std::string& config_file) {
@@ -33,7 +33,7 @@ CLI::Validator NonNegativeFiniteNumber() {
                         std::isfinite(x) && x >= 0.0;
         return ok ? std::string() : "expected a finite number >= 0, got '" + value + "'";
       },
-      "NUMBER");
+      "NONNEGATIVE");
 }
 
 std::vector<std::string> SplitList(const std::string& list) {

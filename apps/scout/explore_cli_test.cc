@@ -91,6 +91,12 @@ TEST_F(ExploreCli, BadInputsNameWhatIsWrongAndLeaveNoOutputs) {
   r = RunScout("explore --config " + (dir_ / "bad.yaml").string() + rooms + o);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find("explore.follower.lookahead"), std::string::npos) << r.output;
+  // A boundary around the right room while the robot starts in the left one.
+  scout::WriteTextFileAtomically(
+      dir_ / "away.yaml", "explore:\n  boundary: [[4.2, 0], [8.2, 0], [8.2, 5.2], [4.2, 5.2]]\n");
+  r = RunScout("explore --start 2,2.5 --config " + (dir_ / "away.yaml").string() + rooms + o);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("explore.boundary: the start"), std::string::npos) << r.output;
   EXPECT_FALSE(fs::exists(out));
 }
 

@@ -99,6 +99,13 @@ nlohmann::json Summary(const ExploreArgs& args, const exploration::ExplorationLo
   s["coverage"] = r.coverage;
   s["mapped_free_m2"] = r.mapped_free_m2;
   s["reachable_free_m2"] = r.reachable_free_m2;
+  // Present only with explore.boundary: coverage then counts inside it alone.
+  const std::vector<Eigen::Vector2d>& boundary = loop.options().explore.boundary;
+  if (!boundary.empty()) {
+    nlohmann::json vertices = nlohmann::json::array();
+    for (const Eigen::Vector2d& v : boundary) vertices.push_back({v.x(), v.y()});
+    s["boundary"] = vertices;
+  }
   s["map_free_m2"] = r.map_free_m2;
   s["path_length_m"] = r.path_length_m;
   s["sim_time_s"] = r.sim_time_s;

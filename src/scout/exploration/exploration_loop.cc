@@ -26,6 +26,21 @@ sim::World WithStart(const sim::World& world, const std::optional<Eigen::Vector2
   return w;
 }
 
+// The goal manager works in the map frame, which local SLAM starts at the
+// start pose: explore.boundary (world frame) is moved into it.
+explore::GoalManagerOptions GoalOptionsInMapFrame(const ExplorationOptions& options,
+                                                  const sim::World& world) {
+  explore::GoalManagerOptions goals = options.explore.goals;
+  if (options.explore.boundary.empty()) return goals;
+  const geometry::Rigid2d map_from_world =
+      geometry::Rigid2d(world.start, options.robot.start_heading_rad).inverse();
+  goals.boundary.clear();
+  for (const Eigen::Vector2d& v : options.explore.boundary) {
+    goals.boundary.push_back(map_from_world * v);
+  }
+  return goals;
+}
+
 std::vector<std::string> EngineStrategies(const ExploreOptions& e) { return {e.strategy}; }
 
 }  // namespace
@@ -47,12 +62,12 @@ ExplorationLoop::ExplorationLoop(const sim::World& world, const ExplorationOptio
     : options_(Prepared(options)),
       world_(WithStart(world, options.start)),
       truth_(world_.map, world_.name, world_.start, PlanningTraversability(options_),
-             options_.robot.robot.radius_m),
+             options_.robot.robot.radius_m, options_.explore.boundary),
       robot_(world_, options_.robot, seed),
       engine_(options_.frontier, EngineStrategies(options_.explore),
               options_.explore.evaluate_frontier),
-      goals_(options_.explore.goals, PlanningTraversability(options_), options_.explore.planner,
-             options_.explore.follower,
+      goals_(GoalOptionsInMapFrame(options_, world_), PlanningTraversability(options_),
+             options_.explore.planner, options_.explore.follower,
              explore::MakeGoalPolicy(options_.explore.goal_policy, options_.explore.policy)),
       world_from_map_(robot_.true_pose()),
       fusion_(options_.slam.local.submaps.resolution_m),

@@ -113,6 +113,25 @@ TEST(ExplorationLoopTest, ARunThatCannotFinishEndsByItself) {
   EXPECT_LT(s.sim_time_s, 30.0);
 }
 
+TEST(ExplorationLoopTest, ABoundaryKeepsTheRobotToItsAreaAndCoverageToIt) {
+  // The left room only (the dividing wall starts at x = 4.5 m).
+  ExplorationOptions o;
+  o.explore.boundary = {{0.0, 0.0}, {4.4, 0.0}, {4.4, 6.3}, {0.0, 6.3}};
+  ExplorationLoop loop(testing::SmallBuilding(), o, 7);
+  const ExplorationResult r = loop.Run();
+  const ExplorationResult whole = Explore({}, 7);
+  EXPECT_EQ(r.terminated, Termination::kComplete);
+  EXPECT_GE(r.coverage, 0.97);
+  EXPECT_EQ(r.collisions, 0);
+  // About 4 m x 6 m of the 9 m x 6 m building, less the pillar.
+  EXPECT_GT(r.reachable_free_m2, 15.0);
+  EXPECT_LT(r.reachable_free_m2, 0.55 * whole.reachable_free_m2);
+  EXPECT_LT(r.path_length_m, whole.path_length_m);
+  for (const IssuedGoal& g : r.goals) {
+    EXPECT_LT(g.target_world.x(), 4.4 + 0.3) << "goal issued at t=" << g.sim_time_s << " s";
+  }
+}
+
 TEST(ExplorationLoopTest, BadOptionsAndStartsAreInputErrors) {
   ExplorationOptions o;
   o.explore.frontier_inflation_radius_m = 0.25;  // below the planner's 0.30 in narrow passages
@@ -129,6 +148,17 @@ TEST(ExplorationLoopTest, BadOptionsAndStartsAreInputErrors) {
   o = {};
   o.explore.dt_s = 0.0;
   EXPECT_THROW(Explore(o, 1), InputError);
+  o = {};
+  o.explore.boundary = {{0.0, 0.0}, {4.4, 0.0}};  // two vertices
+  EXPECT_THROW(Explore(o, 1), InputError);
+  o = {};
+  o.explore.boundary = {{5.0, 0.0}, {9.0, 0.0}, {9.0, 6.0}, {5.0, 6.0}};  // the start is at x = 1.5
+  try {
+    Explore(o, 1);
+    ADD_FAILURE() << "a boundary without the start was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("outside the boundary"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

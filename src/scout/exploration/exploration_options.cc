@@ -58,6 +58,13 @@ void CheckExplorationOptions(const ExplorationOptions& options) {
       !std::isfinite(e.complete_max_reachable_frontier_m)) {
     throw InputError("explore.complete_max_reachable_frontier_m: expected a finite value >= 0");
   }
+  if (!e.boundary.empty() && e.boundary.size() < 3) {
+    throw InputError("explore.boundary: expected at least three [x, y] vertices, got " +
+                     std::to_string(e.boundary.size()));
+  }
+  for (const Eigen::Vector2d& v : e.boundary) {
+    if (!v.allFinite()) throw InputError("explore.boundary: expected finite coordinates");
+  }
   if (!IsOneOf(e.strategy, frontier::StrategyNames())) {
     throw InputError("unknown frontier strategy '" + e.strategy + "': expected one of " +
                      JoinNames(frontier::StrategyNames()));

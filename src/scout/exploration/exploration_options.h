@@ -4,6 +4,7 @@
 #include <Eigen/Core>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "scout/explore/goal_manager.h"
 #include "scout/explore/goal_policies.h"
@@ -101,6 +102,13 @@ struct ExploreOptions {
   // 0.950. (Without the driven cells, 0.30 stranded the robot in a willow
   // room: 0.50.) It must be at least robot radius + narrow margin.
   double frontier_inflation_radius_m = 0.30;
+  // Optional exploration area: a polygon of at least three vertices in the
+  // world frame (metres), which must contain the start. Frontier points
+  // outside it are never goals (the loop hands it to the goal manager in the
+  // map frame; goals.boundary is replaced), and coverage counts only the
+  // reachable free space inside it; the robot may still drive outside it on
+  // the way. Empty: no limit.
+  std::vector<Eigen::Vector2d> boundary;
   explore::GoalManagerOptions goals;
   // robot_radius_m is taken from the robot section (robot.radius_m).
   explore::TraversabilityOptions traversability;

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 #include "scout/common/error.h"
+#include "scout/explore/goal_manager.h"
 #include "scout/explore/path_distance_field.h"
 #include "scout/grid/distance_transform.h"
 
@@ -38,14 +40,27 @@ grid::OccupancyMap Walled(const grid::OccupancyMap& world) {
   return walled;
 }
 
+// 'world' with every cell whose centre lies outside 'boundary' occupied.
+grid::OccupancyMap Outside(const grid::OccupancyMap& world,
+                           const std::vector<Eigen::Vector2d>& boundary) {
+  grid::OccupancyMap bounded = world;
+  for (int64_t i = 0; i < world.limits.num_cells(); ++i) {
+    if (!explore::InsidePolygon(boundary,
+                                world.limits.CellCenter(world.limits.CellOfFlatIndex(i)))) {
+      bounded.cells[i] = grid::CellState::kOccupied;
+    }
+  }
+  return bounded;
+}
+
 }  // namespace
 
 GroundTruth::GroundTruth(const grid::OccupancyMap& unwalled_world, const std::string& world_name,
                          const Eigen::Vector2d& start,
                          const explore::TraversabilityOptions& traversability,
-                         double robot_radius_m)
+                         double robot_radius_m, const std::vector<Eigen::Vector2d>& boundary)
     : GroundTruth(Walled(unwalled_world), world_name, start, traversability, robot_radius_m,
-                  /*walled=*/true) {
+                  boundary, /*walled=*/true) {
   // Back on the world's own lattice (the ring holds no reachable cell), so
   // cell centres are computed exactly as the simulator's and coverage does
   // not move by rounding at cell edges.
@@ -73,7 +88,8 @@ GroundTruth::GroundTruth(const grid::OccupancyMap& unwalled_world, const std::st
 GroundTruth::GroundTruth(const grid::OccupancyMap& world, const std::string& world_name,
                          const Eigen::Vector2d& start,
                          const explore::TraversabilityOptions& traversability,
-                         double robot_radius_m, bool /*walled*/)
+                         double robot_radius_m, const std::vector<Eigen::Vector2d>& boundary,
+                         bool /*walled*/)
     : limits_(world.limits), cell_area_m2_(world.limits.resolution() * world.limits.resolution()) {
   explore::TraversabilityOptions bare_options = traversability;
   bare_options.robot_radius_m = robot_radius_m;
@@ -89,13 +105,23 @@ GroundTruth::GroundTruth(const grid::OccupancyMap& world, const std::string& wor
                      " m); choose a free position with --start X,Y");
   }
   LabelDiscComponents(bare);
+  if (!boundary.empty() && !explore::InsidePolygon(boundary, start)) {
+    throw InputError("explore.boundary: the start (" + Format(start) + ") of world '" + world_name +
+                     "' lies outside the boundary polygon");
+  }
 
   // The spec's reachable space (ALGORITHMS §2 inflation): narrow passages let
   // the explorer through a door its SLAM map narrowed, but they do not widen
   // what exploring completely means.
   explore::TraversabilityOptions strict = traversability;
   strict.narrow_margin_m = strict.safety_margin_m;
-  const explore::PlanningMap inflated(world, strict);
+  // A boundary is a wall here: what counts is what the robot can reach and
+  // cover without leaving it (frontier outside it is never a goal, so rooms
+  // entered only from outside would stay unexplored).
+  std::optional<grid::OccupancyMap> walled_in;
+  if (!boundary.empty()) walled_in = Outside(world, boundary);
+  const grid::OccupancyMap& bounded = walled_in ? *walled_in : world;
+  const explore::PlanningMap inflated(bounded, strict);
   const explore::PathDistanceField from_start(inflated, start);
   std::vector<uint8_t> centre_reachable(limits_.num_cells(), 0);
   bool any = false;
@@ -105,15 +131,16 @@ GroundTruth::GroundTruth(const grid::OccupancyMap& world, const std::string& wor
   if (!any) {
     throw InputError("world '" + world_name + "': no free space is reachable from the start (" +
                      Format(start) + ") for the robot with its safety margin (" +
-                     std::to_string(traversability.inflation_radius_m()) +
-                     " m from walls); choose another position with --start X,Y");
+                     std::to_string(traversability.inflation_radius_m()) + " m from walls" +
+                     (boundary.empty() ? "" : " and from explore.boundary") +
+                     "); choose another position with --start X,Y");
   }
   // The disc covers every cell within its radius of a reachable centre.
   const std::vector<float> d2 =
       grid::SquaredDistanceToNearestSite(centre_reachable, limits_.width(), limits_.height());
   const double r_cells = robot_radius_m / limits_.resolution();
   for (int64_t i = 0; i < limits_.num_cells(); ++i) {
-    if (world.cells[i] == grid::CellState::kFree && d2[i] <= r_cells * r_cells + 1e-6) {
+    if (bounded.cells[i] == grid::CellState::kFree && d2[i] <= r_cells * r_cells + 1e-6) {
       reachable_.push_back(limits_.CellOfFlatIndex(i));
     }
   }

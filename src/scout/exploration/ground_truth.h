@@ -25,11 +25,15 @@ namespace scout::exploration {
 class GroundTruth {
  public:
   // 'traversability' is the explorer's; 'robot_radius_m' the bare disc.
+  // With a 'boundary' polygon (world frame; empty: none), it counts as a
+  // wall: only free cells the disc reaches and covers without its centre
+  // leaving the polygon count.
   // Throws InputError naming the world when the start is not a free position
-  // for the disc (suggesting --start X,Y) or nothing is reachable from it.
+  // for the disc (suggesting --start X,Y), nothing is reachable from it, or
+  // the start or everything reachable lies outside the boundary.
   GroundTruth(const grid::OccupancyMap& world, const std::string& world_name,
               const Eigen::Vector2d& start, const explore::TraversabilityOptions& traversability,
-              double robot_radius_m);
+              double robot_radius_m, const std::vector<Eigen::Vector2d>& boundary = {});
 
   // Returns the reachable free area in m².
   double reachable_free_m2() const { return reachable_cells_ * cell_area_m2_; }
@@ -63,7 +67,7 @@ class GroundTruth {
   // The constructor's work, on the world already walled in.
   GroundTruth(const grid::OccupancyMap& world, const std::string& world_name,
               const Eigen::Vector2d& start, const explore::TraversabilityOptions& traversability,
-              double robot_radius_m, bool walled);
+              double robot_radius_m, const std::vector<Eigen::Vector2d>& boundary, bool walled);
 
   grid::MapLimits limits_;
   double cell_area_m2_ = 0.0;

@@ -126,6 +126,7 @@ void ReadExploreOptions(YamlSection s, exploration::ExploreOptions* o) {
     l.RejectUnknownKeys();
   }
   s.ReadNonNegative("frontier_inflation_radius_m", &o->frontier_inflation_radius_m);
+  s.ReadPoints("boundary", &o->boundary);
   ReadGoals(s.Section("goals"), &o->goals);
   {
     YamlSection t = s.Section("traversability");
@@ -191,6 +192,10 @@ void ValidateExploreAndRobot(const exploration::ExploreOptions& explore,
     sim::CheckSimulatedRobotOptions(robot);
   } catch (const InputError& e) {
     throw InputError(file + ": " + e.what());
+  }
+  if (!explore.boundary.empty() && explore.boundary.size() < 3) {
+    throw InputError(file + ": 'explore.boundary': expected at least three [x, y] vertices, got " +
+                     std::to_string(explore.boundary.size()));
   }
   Check(explore.goals, file, "explore.goals");
   Check(explore.traversability, file, "explore.traversability");

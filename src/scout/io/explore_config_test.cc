@@ -36,6 +36,7 @@ TEST_F(ExploreConfigTest, DefaultFileMatchesTheBuiltInDefaults) {
                    d.explore.local_slam.translation_weight);
   EXPECT_DOUBLE_EQ(c.explore.local_slam.rotation_weight, d.explore.local_slam.rotation_weight);
   EXPECT_DOUBLE_EQ(c.explore.frontier_inflation_radius_m, d.explore.frontier_inflation_radius_m);
+  EXPECT_EQ(c.explore.boundary, d.explore.boundary);
   EXPECT_DOUBLE_EQ(c.explore.goals.progress_timeout_s, d.explore.goals.progress_timeout_s);
   EXPECT_DOUBLE_EQ(c.explore.goals.max_stand_off_m, d.explore.goals.max_stand_off_m);
   EXPECT_DOUBLE_EQ(c.explore.goals.close_stuck_passage_radius_m,
@@ -78,6 +79,25 @@ TEST_F(ExploreConfigTest, ValuesAreReadWithTheirUnits) {
   EXPECT_NEAR(c.explore.follower.rotate_in_place_heading_rad, std::numbers::pi / 6, 1e-12);
   EXPECT_NEAR(c.robot.start_heading_rad, -std::numbers::pi / 2, 1e-12);
   EXPECT_EQ(c.robot.lidar.beams, 361);
+  EXPECT_TRUE(c.explore.boundary.empty());
+}
+
+TEST_F(ExploreConfigTest, BoundaryIsAListOfPoints) {
+  const ScoutConfig c = Load("explore:\n  boundary: [[0, 0], [4.5, -1], [2, 3.25]]\n");
+  ASSERT_EQ(c.explore.boundary.size(), 3u);
+  EXPECT_EQ(c.explore.boundary[1], Eigen::Vector2d(4.5, -1.0));
+  EXPECT_EQ(c.explore.boundary[2], Eigen::Vector2d(2.0, 3.25));
+  // Too few vertices, a vertex that is not a pair of numbers, not a list.
+  const std::string two = ErrorOf("explore:\n  boundary: [[0, 0], [1, 1]]\n");
+  EXPECT_NE(two.find("'explore.boundary': expected at least three"), std::string::npos) << two;
+  const std::string bad = ErrorOf("explore:\n  boundary: [[0, 0], [1, x], [2, 2]]\n");
+  EXPECT_NE(bad.find("'explore.boundary': item 2"), std::string::npos) << bad;
+  const std::string triple = ErrorOf("explore:\n  boundary: [[0, 0, 0], [1, 1], [2, 2]]\n");
+  EXPECT_NE(triple.find("item 1"), std::string::npos) << triple;
+  const std::string nan = ErrorOf("explore:\n  boundary: [[0, .nan], [1, 1], [2, 2]]\n");
+  EXPECT_NE(nan.find("item 1"), std::string::npos) << nan;
+  const std::string scalar = ErrorOf("explore:\n  boundary: 3\n");
+  EXPECT_NE(scalar.find("expected a sequence of [x, y] pairs"), std::string::npos) << scalar;
 }
 
 TEST_F(ExploreConfigTest, ErrorsNameTheKey) {

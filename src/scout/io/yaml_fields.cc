@@ -88,6 +88,36 @@ void YamlSection::ReadBool(const std::string& key, bool* value) {
   }
 }
 
+void YamlSection::ReadPoints(const std::string& key, std::vector<Eigen::Vector2d>* points) {
+  const YAML::Node n = Take(key);
+  if (!n) return;
+  const std::string expected = "expected a sequence of [x, y] pairs of finite numbers";
+  if (!n.IsSequence()) {
+    throw InputError(file_ + ": '" + Name(key) + "': " + expected + ", got '" + YAML::Dump(n) +
+                     "'");
+  }
+  std::vector<Eigen::Vector2d> read;
+  for (size_t i = 0; i < n.size(); ++i) {
+    const YAML::Node& pair = n[i];
+    Eigen::Vector2d p;
+    bool ok = pair.IsSequence() && pair.size() == 2;
+    for (int k = 0; ok && k < 2; ++k) {
+      try {
+        p[k] = pair[k].as<double>();
+        ok = std::isfinite(p[k]);
+      } catch (const YAML::Exception&) {
+        ok = false;
+      }
+    }
+    if (!ok) {
+      throw InputError(file_ + ": '" + Name(key) + "': item " + std::to_string(i + 1) + ": " +
+                       expected + ", got '" + YAML::Dump(pair) + "'");
+    }
+    read.push_back(p);
+  }
+  *points = std::move(read);
+}
+
 YamlSection YamlSection::Section(const std::string& key) {
   return YamlSection(Take(key), file_, Name(key));
 }

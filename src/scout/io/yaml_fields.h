@@ -3,6 +3,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <Eigen/Core>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,9 @@ class YamlSection {
   void ReadNonNegative(const std::string& key, double* value);
   void ReadInt(const std::string& key, int* value, int min_value);
   void ReadBool(const std::string& key, bool* value);
+  // A sequence of [x, y] pairs of finite numbers (an empty sequence clears
+  // 'points').
+  void ReadPoints(const std::string& key, std::vector<Eigen::Vector2d>* points);
   // Returns the sub-section 'key' (possibly empty).
   YamlSection Section(const std::string& key);
   // Throws InputError naming the first key that no Read*/Section asked for.
