@@ -83,6 +83,32 @@ std::vector<io::PosePair> PairWithTruth(const std::vector<io::StampedPose>& esti
   return pairs;
 }
 
+// map.png's overlay in the world frame the picture is drawn in: the
+// submaps where the run's strategy ran frontier detection in the last
+// optimisation round, its global frontier, the navigation points issued and
+// those of the last selection.
+io::MapOverlay MapOverlay(const exploration::ExplorationLoop& loop,
+                          const exploration::ExplorationResult& r) {
+  const geometry::Rigid2d& world_from_map = loop.world_from_map();
+  const frontier::FrontierEngine& engine = loop.frontier_engine();
+  const std::string& strategy = loop.options().explore.strategy;
+  io::MapOverlay overlay;
+  for (const int id : engine.LastRoundSubmaps(strategy)) {
+    const frontier::SubmapRecord& record = engine.catalog().submap(id);
+    overlay.highlighted_submaps.push_back({world_from_map * record.global_pose, record.grid});
+  }
+  for (const Eigen::Vector2d& p : engine.GlobalFrontier(strategy)) {
+    overlay.frontier.push_back(world_from_map * p);
+  }
+  for (const exploration::IssuedGoal& g : r.goals) {
+    overlay.navigation_points.push_back(world_from_map * g.goal_map);
+  }
+  for (const Eigen::Vector2d& p : r.last_candidates_map) {
+    overlay.candidates.push_back(world_from_map * p);
+  }
+  return overlay;
+}
+
 nlohmann::json OptionalSeconds(const std::optional<double>& t) {
   return t ? nlohmann::json(*t) : nlohmann::json(nullptr);
 }
@@ -279,7 +305,7 @@ int RunExplore(const ExploreArgs& args) {
 
   io::WriteMapServerMap(submaps, out.Stage("map.yaml"));
   out.Stage("map.pgm");  // map_server's YAML names its image beside it
-  io::WriteMapPicture(submaps, estimate, out.Stage("map.png"));
+  io::WriteMapPicture(submaps, estimate, MapOverlay(loop, result), out.Stage("map.png"));
   io::WriteCoveragePicture(loop.world().map, loop.CoverageMask(), truth, out.Stage("coverage.png"));
   io::WriteTumTrajectory(estimate, out.Stage("trajectory.tum"));
   io::WriteTumTrajectory(truth, out.Stage("truth.tum"));

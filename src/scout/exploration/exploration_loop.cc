@@ -296,6 +296,7 @@ void ExplorationLoop::RecordIssuedGoal(const Eigen::Vector2d& goal_map,
   const std::vector<Eigen::Vector2d> world = MapPointsInWorld({goal_map, target_map});
   g.goal_world = world[0];
   g.target_world = world[1];
+  g.goal_map = goal_map;
   g.robot_world = robot_.true_pose().translation();
   // Reached means within the follower's tolerance, so that is the slack.
   const double tolerance_m = options_.explore.follower.goal_tolerance_m;
@@ -389,6 +390,7 @@ ExplorationResult ExplorationLoop::Run(const ProgressCallback& progress,
       result_.reachable_frontier_left_world =
           MapPointsInWorld(status.reachable_frontier_left_points);
       result_.visited_frontier_left = status.visited_frontier_left;
+      result_.last_candidates_map = status.candidates;
       break;
     }
     const frontier::Stopwatch watch;

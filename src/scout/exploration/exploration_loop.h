@@ -52,6 +52,9 @@ struct IssuedGoal {
   // relative to that node in the submap (ExplorationLoop::MapPointsInWorld).
   Eigen::Vector2d goal_world = Eigen::Vector2d::Zero();
   Eigen::Vector2d target_world = Eigen::Vector2d::Zero();
+  // The navigation point in the map frame as it was when issued (for
+  // pictures of the estimated map).
+  Eigen::Vector2d goal_map = Eigen::Vector2d::Zero();
   Eigen::Vector2d robot_world = Eigen::Vector2d::Zero();  // true position then
   // False when the bare disc could not get within the goal tolerance of the
   // target from where it stood: the robot was sent somewhere it cannot be.
@@ -109,6 +112,9 @@ struct ExplorationResult {
   std::vector<Eigen::Vector2d> reachable_frontier_left_world;
   std::vector<CoverageSample> coverage_samples;
   std::vector<IssuedGoal> goals;
+  // The navigation points of the goal policy's latest selection, best first,
+  // map frame (none when it finished because none was left).
+  std::vector<Eigen::Vector2d> last_candidates_map;
   // Where each collision began (true position, world frame) and when.
   struct Collision {
     double sim_time_s = 0.0;

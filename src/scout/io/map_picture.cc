@@ -29,6 +29,11 @@ constexpr Rgb kMappedColour = {255, 255, 255};
 constexpr Rgb kWallColour = {0, 0, 0};
 constexpr Rgb kUnreachableColour = {228, 228, 228};
 constexpr Rgb kUnknownColour = {kUnknownGrey, kUnknownGrey, kUnknownGrey};
+// The exploration overlay (WriteFrontierPicture's tint and blue).
+constexpr Rgb kHighlightColour = {255, 190, 190};
+constexpr Rgb kFrontierColour = {20, 60, 230};
+constexpr Rgb kNavigationPointColour = {0, 110, 40};
+constexpr Rgb kCandidateColour = {200, 0, 200};
 
 std::vector<grid::PlacedGrid> Placed(const GlobalSubmaps& submaps) {
   std::vector<grid::PlacedGrid> placed;
@@ -59,6 +64,11 @@ class Canvas {
   const grid::MapLimits& limits() const { return limits_; }
   const grid::Image& image() const { return image_; }
 
+  bool IsWhite(const grid::CellIndex& c) const {
+    if (!limits_.Contains(c)) return false;
+    const uint8_t* px = image_.at(c.x, image_.height - 1 - c.y);
+    return px[0] == 255 && px[1] == 255 && px[2] == 255;
+  }
   void Set(const grid::CellIndex& c, const Rgb& rgb) {
     if (!limits_.Contains(c)) return;
     std::copy(rgb.begin(), rgb.end(), image_.at(c.x, image_.height - 1 - c.y));
@@ -132,10 +142,48 @@ void DrawTrajectory(const std::vector<StampedPose>& trajectory, Canvas& canvas) 
   canvas.Disc(cell(0), mark_radius, kStartColour);
 }
 
+void DrawOverlayUnderTrajectory(const MapOverlay& overlay, Canvas& canvas) {
+  const grid::MapLimits& limits = canvas.limits();
+  for (const auto& [pose, grid] : overlay.highlighted_submaps) {
+    if (grid == nullptr) continue;
+    const grid::MapLimits& sl = grid->limits();
+    for (int y = 0; y < sl.height(); ++y) {
+      for (int x = 0; x < sl.width(); ++x) {
+        if (grid->State({x, y}) != grid::CellState::kFree) continue;
+        const grid::CellIndex c = limits.CellContaining(pose * sl.CellCenter({x, y}));
+        if (canvas.IsWhite(c)) canvas.Set(c, kHighlightColour);
+      }
+    }
+  }
+  const int side = std::max(limits.width(), limits.height());
+  const int dot = side >= 1000 ? 1 : 0;
+  for (const Eigen::Vector2d& p : overlay.frontier) {
+    canvas.Stamp(limits.CellContaining(p), dot, kFrontierColour);
+  }
+  for (const Eigen::Vector2d& p : overlay.navigation_points) {
+    canvas.Disc(limits.CellContaining(p), dot + 1, kNavigationPointColour);
+  }
+}
+
+void DrawCandidates(const MapOverlay& overlay, Canvas& canvas) {
+  const int radius = std::max(2, std::max(canvas.limits().width(), canvas.limits().height()) / 250);
+  for (const Eigen::Vector2d& p : overlay.candidates) {
+    const grid::CellIndex c = canvas.limits().CellContaining(p);
+    canvas.Disc(c, radius + 1, kMarkOutline);
+    canvas.Disc(c, radius, kCandidateColour);
+  }
+}
+
 }  // namespace
 
 void WriteMapPicture(const GlobalSubmaps& submaps, const std::vector<StampedPose>& trajectory,
                      const std::filesystem::path& path, int max_side_px) {
+  WriteMapPicture(submaps, trajectory, MapOverlay{}, path, max_side_px);
+}
+
+void WriteMapPicture(const GlobalSubmaps& submaps, const std::vector<StampedPose>& trajectory,
+                     const MapOverlay& overlay, const std::filesystem::path& path,
+                     int max_side_px) {
   if (max_side_px < 2) throw std::invalid_argument("WriteMapPicture: max_side_px must be >= 2");
   const std::vector<grid::PlacedGrid> placed = Placed(submaps);
   geometry::Box2d bounds;
@@ -174,7 +222,9 @@ void WriteMapPicture(const GlobalSubmaps& submaps, const std::vector<StampedPose
     const uint8_t v = s == grid::CellState::kFree ? 255 : 0;
     canvas.Set(c, {v, v, v});
   }
+  DrawOverlayUnderTrajectory(overlay, canvas);
   DrawTrajectory(trajectory, canvas);
+  DrawCandidates(overlay, canvas);
   grid::WriteImage(canvas.image(), path);
 }
 

@@ -29,6 +29,26 @@ using GlobalSubmaps =
 void WriteMapPicture(const GlobalSubmaps& submaps, const std::vector<StampedPose>& trajectory,
                      const std::filesystem::path& path, int max_side_px = 3000);
 
+// What an exploration run draws over its map picture, like the paper's first
+// figure; everything in the picture's frame.
+struct MapOverlay {
+  // Submaps whose known free cells are tinted red: where frontier detection
+  // ran in the last optimisation round.
+  GlobalSubmaps highlighted_submaps;
+  // Global frontier points: blue.
+  std::vector<Eigen::Vector2d> frontier;
+  // Navigation points the robot was sent to: small dark-green dots.
+  std::vector<Eigen::Vector2d> navigation_points;
+  // The latest selection's navigation points: larger magenta discs.
+  std::vector<Eigen::Vector2d> candidates;
+};
+
+// WriteMapPicture with 'overlay' drawn under the trajectory (the candidates
+// over it).
+void WriteMapPicture(const GlobalSubmaps& submaps, const std::vector<StampedPose>& trajectory,
+                     const MapOverlay& overlay, const std::filesystem::path& path,
+                     int max_side_px = 3000);
+
 // Writes a PNG picture of what an exploration run's coverage counted, over
 // the true world: per cell of 'world', 'coverage_mask' holds 0 (not
 // reachable), 1 (reachable, not mapped free) or 2 (reachable and mapped free;

@@ -61,6 +61,46 @@ TEST(WriteMapPicture, DrawsTheFusedMapAndTheTrajectoryInColour) {
   EXPECT_LE(coloured, 48 + 2 * 49);
 }
 
+TEST(WriteMapPicture, DrawsTheExplorationOverlay) {
+  const grid::TestTempDirectory dir;
+  const std::shared_ptr<const grid::ProbabilityGrid> submap = HalfKnownSubmap();
+  const GlobalSubmaps submaps = {{geometry::Rigid2d(1.0, 2.0, 0.0), submap}};
+  // The picture's map origin is (1, 2), 0.125 m cells, rows flipped.
+  const auto path = dir.path() / "map.png";
+  MapOverlay overlay;
+  // Only the lower half (y < 5) of the submap is highlighted: a second copy
+  // of it, 3 m lower, whose upper half overlaps the picture's lower half.
+  overlay.highlighted_submaps = {{geometry::Rigid2d(1.0, -1.0, 0.0), submap}};
+  overlay.frontier = {{6.25, 7.0}};
+  overlay.navigation_points = {{2.5, 6.5}};
+  overlay.candidates = {{3.5, 7.2}};
+  WriteMapPicture(submaps, {}, overlay, path);
+  const grid::Image image = grid::ReadImage(path);
+  ASSERT_EQ(image.width, 80);
+  const auto at = [&](double x, double y) {
+    return image.at(static_cast<int>((x - 1.0) / 0.125), 47 - static_cast<int>((y - 2.0) / 0.125));
+  };
+  const uint8_t* tinted = at(3.0, 4.0);
+  EXPECT_EQ(tinted[0], 255);
+  EXPECT_LT(tinted[1], 255);  // red tint over free space
+  const uint8_t* plain = at(1.6, 5.6);
+  EXPECT_EQ(plain[1], 255);         // above the highlighted copy: white
+  EXPECT_EQ(at(6.06, 4.0)[0], 0);   // walls stay black under the tint
+  EXPECT_GT(at(6.3, 7.0)[2], 200);  // frontier: blue
+  EXPECT_LT(at(6.3, 7.0)[0], 100);
+  EXPECT_GT(at(2.5, 6.5)[1], at(2.5, 6.5)[0]);  // navigation point: green
+  const uint8_t* candidate = at(3.5, 7.2);
+  EXPECT_GT(candidate[0], 150);  // magenta
+  EXPECT_GT(candidate[2], 150);
+  EXPECT_LT(candidate[1], 50);
+  // Without an overlay the same map has no colour at all.
+  WriteMapPicture(submaps, {}, path);
+  const grid::Image bare = grid::ReadImage(path);
+  for (int y = 0; y < bare.height; ++y) {
+    for (int x = 0; x < bare.width; ++x) ASSERT_FALSE(IsColoured(bare.at(x, y)));
+  }
+}
+
 TEST(WriteMapPicture, CoarsensToMaxSideAndCoversTheTrajectory) {
   const grid::TestTempDirectory dir;
   const GlobalSubmaps submaps = {{geometry::Rigid2d(0.0, 0.0, 0.0), HalfKnownSubmap()}};
