@@ -30,15 +30,12 @@
 namespace scout::apps {
 namespace {
 
-constexpr int kMaxWarningsPrinted = 10;
-
+// All of them: the readers list at most ten of each kind and then say how
+// many more there were, and a cap over all kinds hid the one that said the
+// log ended early behind ten odometry lines.
 void PrintWarnings(const io::Dataset& dataset) {
-  const int n = static_cast<int>(dataset.warnings.size());
-  for (int i = 0; i < std::min(n, kMaxWarningsPrinted); ++i) {
-    std::cerr << "scout: warning: " << dataset.warnings[i] << "\n";
-  }
-  if (n > kMaxWarningsPrinted) {
-    std::cerr << "scout: warning: ... and " << n - kMaxWarningsPrinted << " more warnings\n";
+  for (const std::string& warning : dataset.warnings) {
+    std::cerr << "scout: warning: " << warning << "\n";
   }
 }
 

@@ -296,10 +296,12 @@ Dataset ReadCarmenLog(const fs::path& path, CarmenLogCounts* counts) {
                        std::to_string(reader.line_number()) + " (" + reader.error() +
                        ") before any usable scan; expected a complete gzip stream");
     }
-    dataset.warnings.push_back(source + ": gzip data ends early after line " +
-                               std::to_string(reader.line_number()) + " (" + reader.error() +
-                               "); keeping the " + std::to_string(dataset.scans.size()) +
-                               " scans read up to there");
+    // First: of all the warnings, losing the rest of the log matters most.
+    dataset.warnings.insert(dataset.warnings.begin(),
+                            source + ": gzip data ends early after line " +
+                                std::to_string(reader.line_number()) + " (" + reader.error() +
+                                "); keeping the " + std::to_string(dataset.scans.size()) +
+                                " scans read up to there");
   }
   parser.Finish();
   if (dataset.scans.empty()) {
