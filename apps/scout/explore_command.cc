@@ -85,8 +85,8 @@ std::vector<io::PosePair> PairWithTruth(const std::vector<io::StampedPose>& esti
 
 // map.png's overlay in the world frame the picture is drawn in: the
 // submaps where the run's strategy ran frontier detection in the last
-// optimisation round, its global frontier, the navigation points issued and
-// those of the last selection.
+// optimisation round, its global frontier, the navigation points issued,
+// those of the last selection and the exploration boundary.
 io::MapOverlay MapOverlay(const exploration::ExplorationLoop& loop,
                           const exploration::ExplorationResult& r) {
   const geometry::Rigid2d& world_from_map = loop.world_from_map();
@@ -106,6 +106,7 @@ io::MapOverlay MapOverlay(const exploration::ExplorationLoop& loop,
   for (const Eigen::Vector2d& p : r.last_candidates_map) {
     overlay.candidates.push_back(world_from_map * p);
   }
+  overlay.boundary = loop.options().explore.boundary;  // already in the world frame
   return overlay;
 }
 

@@ -34,6 +34,7 @@ constexpr Rgb kHighlightColour = {255, 190, 190};
 constexpr Rgb kFrontierColour = {20, 60, 230};
 constexpr Rgb kNavigationPointColour = {0, 110, 40};
 constexpr Rgb kCandidateColour = {200, 0, 200};
+constexpr Rgb kBoundaryColour = {240, 120, 0};
 
 std::vector<grid::PlacedGrid> Placed(const GlobalSubmaps& submaps) {
   std::vector<grid::PlacedGrid> placed;
@@ -142,6 +143,34 @@ void DrawTrajectory(const std::vector<StampedPose>& trajectory, Canvas& canvas) 
   canvas.Disc(cell(0), mark_radius, kStartColour);
 }
 
+// Clips the segment a-b to 'box' (Liang-Barsky); false when none of it lies
+// inside.
+bool ClipToBox(const geometry::Box2d& box, Eigen::Vector2d* a, Eigen::Vector2d* b) {
+  const Eigen::Vector2d d = *b - *a;
+  double t0 = 0.0, t1 = 1.0;
+  for (int k = 0; k < 2; ++k) {
+    const double p[2] = {-d[k], d[k]};
+    const double q[2] = {(*a)[k] - box.min[k], box.max[k] - (*a)[k]};
+    for (int side = 0; side < 2; ++side) {
+      if (p[side] == 0.0) {
+        if (q[side] < 0.0) return false;
+        continue;
+      }
+      const double t = q[side] / p[side];
+      if (p[side] < 0.0) {
+        t0 = std::max(t0, t);
+      } else {
+        t1 = std::min(t1, t);
+      }
+    }
+  }
+  if (t0 > t1) return false;
+  const Eigen::Vector2d start = *a;
+  *a = start + t0 * d;
+  *b = start + t1 * d;
+  return true;
+}
+
 void DrawOverlayUnderTrajectory(const MapOverlay& overlay, Canvas& canvas) {
   const grid::MapLimits& limits = canvas.limits();
   for (const auto& [pose, grid] : overlay.highlighted_submaps) {
@@ -162,6 +191,18 @@ void DrawOverlayUnderTrajectory(const MapOverlay& overlay, Canvas& canvas) {
   }
   for (const Eigen::Vector2d& p : overlay.navigation_points) {
     canvas.Disc(limits.CellContaining(p), dot + 1, kNavigationPointColour);
+  }
+  // Edges are clipped to the picture first: a boundary far larger than the
+  // map would otherwise be walked cell by cell far outside it.
+  const geometry::Box2d box{
+      limits.origin(),
+      limits.origin() + limits.resolution() * Eigen::Vector2d(limits.width(), limits.height())};
+  for (size_t i = 0; i < overlay.boundary.size(); ++i) {
+    Eigen::Vector2d a = overlay.boundary[i];
+    Eigen::Vector2d b = overlay.boundary[(i + 1) % overlay.boundary.size()];
+    if (ClipToBox(box, &a, &b)) {
+      canvas.Line(limits.CellContaining(a), limits.CellContaining(b), dot, kBoundaryColour);
+    }
   }
 }
 

@@ -41,6 +41,8 @@ struct MapOverlay {
   std::vector<Eigen::Vector2d> navigation_points;
   // The latest selection's navigation points: larger magenta discs.
   std::vector<Eigen::Vector2d> candidates;
+  // The exploration boundary polygon (closed; empty: none): an orange line.
+  std::vector<Eigen::Vector2d> boundary;
 };
 
 // WriteMapPicture with 'overlay' drawn under the trajectory (the candidates

@@ -74,6 +74,9 @@ TEST(WriteMapPicture, DrawsTheExplorationOverlay) {
   overlay.frontier = {{6.25, 7.0}};
   overlay.navigation_points = {{2.5, 6.5}};
   overlay.candidates = {{3.5, 7.2}};
+  // A boundary whose west edge runs along x = 1.5 inside the picture and
+  // whose other vertices lie a thousand kilometres away (clipped, not walked).
+  overlay.boundary = {{1.5, -1e6}, {1e6, -1e6}, {1e6, 1e6}, {1.5, 1e6}};
   WriteMapPicture(submaps, {}, overlay, path);
   const grid::Image image = grid::ReadImage(path);
   ASSERT_EQ(image.width, 80);
@@ -83,12 +86,17 @@ TEST(WriteMapPicture, DrawsTheExplorationOverlay) {
   const uint8_t* tinted = at(3.0, 4.0);
   EXPECT_EQ(tinted[0], 255);
   EXPECT_LT(tinted[1], 255);  // red tint over free space
-  const uint8_t* plain = at(1.6, 5.6);
+  const uint8_t* plain = at(2.2, 5.6);
   EXPECT_EQ(plain[1], 255);         // above the highlighted copy: white
   EXPECT_EQ(at(6.06, 4.0)[0], 0);   // walls stay black under the tint
   EXPECT_GT(at(6.3, 7.0)[2], 200);  // frontier: blue
   EXPECT_LT(at(6.3, 7.0)[0], 100);
   EXPECT_GT(at(2.5, 6.5)[1], at(2.5, 6.5)[0]);  // navigation point: green
+  const uint8_t* edge = at(1.5, 6.0);           // the boundary: orange
+  EXPECT_GT(edge[0], 200);
+  EXPECT_GT(edge[1], 80);
+  EXPECT_LT(edge[2], 50);
+  EXPECT_EQ(at(2.0, 6.0)[2], 255);  // beside it: white
   const uint8_t* candidate = at(3.5, 7.2);
   EXPECT_GT(candidate[0], 150);  // magenta
   EXPECT_GT(candidate[2], 150);
