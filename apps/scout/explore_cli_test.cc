@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 #include <random>
 #include <sstream>
@@ -105,10 +106,20 @@ TEST_F(ExploreCli, ExploresASmallMapAndWritesEveryOutput) {
   const Result r = RunScout("explore --quiet --seed 2 --world " + (dir_ / "rooms.yaml").string() +
                             " --out " + out.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  for (const char* name : {"map.yaml", "map.pgm", "map.png", "coverage.png", "trajectory.tum",
-                           "truth.tum", "frontier.csv", "coverage.csv", "summary.json"}) {
+  for (const char* name :
+       {"map.yaml", "map.pgm", "map.png", "coverage.png", "trajectory.tum", "truth.tum",
+        "frontier.csv", "coverage.csv", "summary.json", "report.html", "figures/coverage_path.svg",
+        "figures/coverage_time.svg"}) {
     EXPECT_TRUE(fs::exists(out / name)) << name;
   }
+  // The report embeds both pictures and names the directory the run is in,
+  // not the staging directory it was written in.
+  std::ifstream page(out / "report.html");
+  const std::string html((std::istreambuf_iterator<char>(page)), std::istreambuf_iterator<char>());
+  EXPECT_NE(html.find("<code>" + out.string() + "</code>"), std::string::npos);
+  EXPECT_EQ(html.find("staging"), std::string::npos);
+  EXPECT_NE(html.find("coverage.png"), std::string::npos);
+  EXPECT_NE(html.find("data:image/png;base64,"), std::string::npos);
   std::ifstream in(out / "summary.json");
   const nlohmann::json s = nlohmann::json::parse(in);
   EXPECT_EQ(s["world"], "rooms");

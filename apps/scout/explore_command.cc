@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "apps/scout/command_util.h"
+#include "apps/scout/report_command.h"
 #include "scout/common/atomic_file.h"
 #include "scout/common/error.h"
 #include "scout/exploration/exploration_loop.h"
@@ -312,7 +313,10 @@ int RunExplore(const ExploreArgs& args) {
   io::WriteTumTrajectory(truth, out.Stage("truth.tum"));
   io::WriteFrontierCsv(loop.frontier_engine(), out.Stage("frontier.csv"));
   WriteCoverageCsv(result.coverage_samples, out.Stage("coverage.csv"));
-  WriteTextFileAtomically(out.Stage("summary.json"), summary.dump(2) + "\n");
+  const std::filesystem::path summary_path = out.Stage("summary.json");
+  WriteTextFileAtomically(summary_path, summary.dump(2) + "\n");
+  // The report reads the staged outputs and is committed together with them.
+  StageRunReport(summary_path.parent_path(), out);
   if (log) log->Close();
   out.Commit();
 
@@ -331,7 +335,7 @@ int RunExplore(const ExploreArgs& args) {
             << result.visited_frontier_left << " reachable near reached goals)\n"
             << "outputs: " << (out.path() / "summary.json").string()
             << ", map.yaml, map.pgm, map.png, coverage.png, trajectory.tum, truth.tum, "
-               "frontier.csv, coverage.csv"
+               "frontier.csv, coverage.csv, report.html, figures/"
             << (log ? ", sensor.log" : "") << "\n";
   return 0;
 }

@@ -18,7 +18,7 @@ CLI::App* AddReportCommand(CLI::App& app, ReportArgs* args) {
 
 void StageRunReport(const std::filesystem::path& inputs, io::OutputDirectory& out) {
   const std::string name = report::RunName(out.path());
-  for (const report::ReportFile& file : report::BuildRunReport(inputs, name)) {
+  for (const report::ReportFile& file : report::BuildRunReport(inputs, name, out.path())) {
     WriteTextFileAtomically(out.Stage(file.name), file.content);
   }
 }

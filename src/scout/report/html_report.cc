@@ -79,8 +79,10 @@ std::string RenderRunReport(const RunData& run, const std::vector<Figure>& figur
   return HtmlPage("Scout report: " + run.name, body.str());
 }
 
-std::vector<ReportFile> BuildRunReport(const std::filesystem::path& dir, const std::string& name) {
-  const RunData run = ReadRun(dir, name);
+std::vector<ReportFile> BuildRunReport(const std::filesystem::path& dir, const std::string& name,
+                                       const std::filesystem::path& shown_dir) {
+  RunData run = ReadRun(dir, name);
+  if (!shown_dir.empty()) run.dir = shown_dir;
   const std::vector<Figure> figures = RunFigures(run);
   std::vector<ReportFile> files;
   for (const Figure& f : figures) files.push_back({"figures/" + f.name + ".svg", f.svg});

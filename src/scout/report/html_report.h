@@ -20,10 +20,13 @@ std::string RenderRunReport(const RunData& run, const std::vector<Figure>& figur
 
 // Reads the outputs in 'dir' and returns "report.html" and one
 // "figures/<name>.svg" per figure, for the caller to write (atomically).
-// 'name' is the run's title (default: the directory's name). Throws
-// InputError like ReadRun.
+// 'name' is the run's title (default: the directory's name); the page names
+// 'shown_dir' as the run's directory (default: 'dir'; commands that report
+// on the run they are staging pass where it will be). Throws InputError like
+// ReadRun.
 std::vector<ReportFile> BuildRunReport(const std::filesystem::path& dir,
-                                       const std::string& name = "");
+                                       const std::string& name = "",
+                                       const std::filesystem::path& shown_dir = {});
 
 }  // namespace scout::report
 
