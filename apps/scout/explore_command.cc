@@ -88,8 +88,8 @@ std::vector<io::PosePair> PairWithTruth(const std::vector<io::StampedPose>& esti
 // submaps where the run's strategy ran frontier detection in the last
 // optimisation round, its global frontier, the navigation points issued,
 // those of the last selection and the exploration boundary.
-io::MapOverlay MapOverlay(const exploration::ExplorationLoop& loop,
-                          const exploration::ExplorationResult& r) {
+io::MapOverlay ExplorationOverlay(const exploration::ExplorationLoop& loop,
+                                  const exploration::ExplorationResult& r) {
   const geometry::Rigid2d& world_from_map = loop.world_from_map();
   const frontier::FrontierEngine& engine = loop.frontier_engine();
   const std::string& strategy = loop.options().explore.strategy;
@@ -307,7 +307,7 @@ int RunExplore(const ExploreArgs& args) {
 
   io::WriteMapServerMap(submaps, out.Stage("map.yaml"));
   out.Stage("map.pgm");  // map_server's YAML names its image beside it
-  io::WriteMapPicture(submaps, estimate, MapOverlay(loop, result), out.Stage("map.png"));
+  io::WriteMapPicture(submaps, estimate, ExplorationOverlay(loop, result), out.Stage("map.png"));
   io::WriteCoveragePicture(loop.world().map, loop.CoverageMask(), truth, out.Stage("coverage.png"));
   io::WriteTumTrajectory(estimate, out.Stage("trajectory.tum"));
   io::WriteTumTrajectory(truth, out.Stage("truth.tum"));

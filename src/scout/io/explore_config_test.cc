@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <utility>
 
 #include "scout/common/atomic_file.h"
 #include "scout/common/error.h"
@@ -87,17 +88,17 @@ TEST_F(ExploreConfigTest, BoundaryIsAListOfPoints) {
   ASSERT_EQ(c.explore.boundary.size(), 3u);
   EXPECT_EQ(c.explore.boundary[1], Eigen::Vector2d(4.5, -1.0));
   EXPECT_EQ(c.explore.boundary[2], Eigen::Vector2d(2.0, 3.25));
-  // Too few vertices, a vertex that is not a pair of numbers, not a list.
-  const std::string two = ErrorOf("explore:\n  boundary: [[0, 0], [1, 1]]\n");
-  EXPECT_NE(two.find("'explore.boundary': expected at least three"), std::string::npos) << two;
-  const std::string bad = ErrorOf("explore:\n  boundary: [[0, 0], [1, x], [2, 2]]\n");
-  EXPECT_NE(bad.find("'explore.boundary': item 2"), std::string::npos) << bad;
-  const std::string triple = ErrorOf("explore:\n  boundary: [[0, 0, 0], [1, 1], [2, 2]]\n");
-  EXPECT_NE(triple.find("item 1"), std::string::npos) << triple;
-  const std::string nan = ErrorOf("explore:\n  boundary: [[0, .nan], [1, 1], [2, 2]]\n");
-  EXPECT_NE(nan.find("item 1"), std::string::npos) << nan;
-  const std::string scalar = ErrorOf("explore:\n  boundary: 3\n");
-  EXPECT_NE(scalar.find("expected a sequence of [x, y] pairs"), std::string::npos) << scalar;
+  // Too few vertices, a vertex that is not a pair of finite numbers, not a list.
+  const std::pair<const char*, const char*> cases[] = {
+      {"[[0, 0], [1, 1]]", "'explore.boundary': expected at least three"},
+      {"[[0, 0], [1, x], [2, 2]]", "'explore.boundary': item 2"},
+      {"[[0, 0, 0], [1, 1], [2, 2]]", "'explore.boundary': item 1"},
+      {"[[0, .nan], [1, 1], [2, 2]]", "'explore.boundary': item 1"},
+      {"3", "expected a sequence of [x, y] pairs"}};
+  for (const auto& [boundary, expected] : cases) {
+    const std::string error = ErrorOf(std::string("explore:\n  boundary: ") + boundary + "\n");
+    EXPECT_NE(error.find(expected), std::string::npos) << boundary << ": " << error;
+  }
 }
 
 TEST_F(ExploreConfigTest, ErrorsNameTheKey) {
