@@ -41,6 +41,16 @@ explore::TraversabilityOptions PlanningTraversability(const ExplorationOptions& 
   return t;
 }
 
+void CheckExplorationBoundary(const std::vector<Eigen::Vector2d>& boundary) {
+  if (!boundary.empty() && boundary.size() < 3) {
+    throw InputError("'explore.boundary': expected at least three [x, y] vertices, got " +
+                     std::to_string(boundary.size()));
+  }
+  for (const Eigen::Vector2d& v : boundary) {
+    if (!v.allFinite()) throw InputError("'explore.boundary': expected finite coordinates");
+  }
+}
+
 void CheckExplorationOptions(const ExplorationOptions& options) {
   const ExploreOptions& e = options.explore;
   RequirePositive(e.dt_s, "dt_s");
@@ -58,13 +68,7 @@ void CheckExplorationOptions(const ExplorationOptions& options) {
       !std::isfinite(e.complete_max_reachable_frontier_m)) {
     throw InputError("explore.complete_max_reachable_frontier_m: expected a finite value >= 0");
   }
-  if (!e.boundary.empty() && e.boundary.size() < 3) {
-    throw InputError("explore.boundary: expected at least three [x, y] vertices, got " +
-                     std::to_string(e.boundary.size()));
-  }
-  for (const Eigen::Vector2d& v : e.boundary) {
-    if (!v.allFinite()) throw InputError("explore.boundary: expected finite coordinates");
-  }
+  CheckExplorationBoundary(e.boundary);
   if (!IsOneOf(e.strategy, frontier::StrategyNames())) {
     throw InputError("unknown frontier strategy '" + e.strategy + "': expected one of " +
                      JoinNames(frontier::StrategyNames()));

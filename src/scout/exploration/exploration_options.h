@@ -134,6 +134,10 @@ struct ExplorationOptions {
 // limits.
 void CheckExplorationOptions(const ExplorationOptions& options);
 
+// Throws InputError naming explore.boundary unless it is empty or has at
+// least three finite vertices (part of CheckExplorationOptions).
+void CheckExplorationBoundary(const std::vector<Eigen::Vector2d>& boundary);
+
 // Returns options.slam with explore.local_slam applied: what the loop runs.
 slam::SlamOptions EffectiveSlamOptions(const ExplorationOptions& options);
 

@@ -193,9 +193,10 @@ void ValidateExploreAndRobot(const exploration::ExploreOptions& explore,
   } catch (const InputError& e) {
     throw InputError(file + ": " + e.what());
   }
-  if (!explore.boundary.empty() && explore.boundary.size() < 3) {
-    throw InputError(file + ": 'explore.boundary': expected at least three [x, y] vertices, got " +
-                     std::to_string(explore.boundary.size()));
+  try {
+    exploration::CheckExplorationBoundary(explore.boundary);
+  } catch (const InputError& e) {
+    throw InputError(file + ": " + e.what());
   }
   Check(explore.goals, file, "explore.goals");
   Check(explore.traversability, file, "explore.traversability");
