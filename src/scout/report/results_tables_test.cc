@@ -125,6 +125,36 @@ TEST(ResultsTables, MissingSummaryNamesTheDirectory) {
   EXPECT_THROW(ResultsTables(TableKind::kBench, {}), InputError);
 }
 
+TEST(ResultsTables, SummaryValueOfTheWrongTypeNamesTheFileAndKey) {
+  struct Case {
+    std::string summary;
+    std::string message;
+  };
+  const std::vector<Case> cases = {
+      {R"({"coverage": "abc"})", "key 'coverage' is \"abc\", expected a number"},
+      {R"({"goals": 5})", "key 'goals' is 5, expected an object"},
+      {R"({"frontier": {"strategies": {"exact": {"P": "x"}}}})",
+       "key 'frontier/strategies/exact/P' is \"x\", expected a number"},
+      {R"({"reference": {"ate_rmse_m": [1]}})", "key 'reference/ate_rmse_m' is [1]"},
+  };
+  const std::filesystem::path dir = FreshDir("tables_wrong_type");
+  for (const Case& c : cases) {
+    WriteTextFileAtomically(dir / "summary.json", c.summary);
+    try {
+      ResultsTables(TableKind::kExplore, {dir});
+      ADD_FAILURE() << "expected InputError for " << c.summary;
+    } catch (const InputError& e) {
+      EXPECT_TRUE(Contains(e.what(), (dir / "summary.json").string())) << e.what();
+      EXPECT_TRUE(Contains(e.what(), c.message)) << e.what();
+    }
+  }
+  // Not measured: null, and frontier-bench's "reference": false.
+  WriteTextFileAtomically(dir / "summary.json",
+                          R"({"reference": false, "coverage": null, "goals_policy": "scout",
+                              "slam": {"synchronous": true, "nodes": 3}})");
+  EXPECT_NO_THROW(ResultsTables(TableKind::kExplore, {dir}));
+}
+
 TEST(ResultsTables, KindIsParsedOrNamed) {
   EXPECT_EQ(ParseTableKind("replay"), TableKind::kReplay);
   EXPECT_EQ(ParseTableKind("bench"), TableKind::kBench);

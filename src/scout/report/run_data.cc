@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <string>
+#include <vector>
 
 #include "scout/common/error.h"
 #include "scout/report/csv_table.h"
@@ -19,16 +21,96 @@ int64_t Count(const CsvTable& table, int row, const std::string& column) {
   return static_cast<int64_t>(v);
 }
 
+// The numbers the tables, reports and figures read from a summary ('*' = every
+// member). Each may be absent or null (not measured); anything else there is an
+// error, so a damaged file is named instead of showing as a blank or a zero.
+constexpr const char* kSummaryNumbers[] = {"seed",
+                                           "scans",
+                                           "submaps",
+                                           "optimizations",
+                                           "loop_closures",
+                                           "local_frontier_points",
+                                           "epsilon_m",
+                                           "wall_time_s",
+                                           "sim_time_s",
+                                           "data_duration_s",
+                                           "realtime_factor",
+                                           "peak_rss_mb",
+                                           "odom_noise",
+                                           "coverage",
+                                           "mapped_free_m2",
+                                           "reachable_free_m2",
+                                           "path_length_m",
+                                           "collisions",
+                                           "ate_rmse_m",
+                                           "goals/*",
+                                           "time_to_coverage_s/*",
+                                           "slam/nodes",
+                                           "slam/submaps",
+                                           "slam/optimizations",
+                                           "slam/loop_closures",
+                                           "reference/matched_scans",
+                                           "reference/reference_scans",
+                                           "reference/ate_rmse_m",
+                                           "reference/ate_max_m",
+                                           "reference/rpe_1s_trans_m",
+                                           "reference/rpe_1s_rot_deg",
+                                           "reference/rpe_10s_trans_m",
+                                           "reference/rpe_10s_rot_deg",
+                                           "consistency/*",
+                                           "frontier/strategies/*/*"};
+
+// Checks 'node' against the path segments from 'at' on; 'where' names the
+// keys walked so far.
+void CheckNumbers(const nlohmann::json& node, const std::vector<std::string>& segments, size_t at,
+                  const std::string& where, const std::filesystem::path& path) {
+  if (at == segments.size()) {
+    if (node.is_number() || node.is_null()) return;
+    throw InputError(path.string() + ": key '" + where + "' is " + node.dump() +
+                     ", expected a number");
+  }
+  if (node.is_null()) return;
+  // frontier-bench writes "reference": false when it ran no reference.
+  if (where == "reference" && node.is_boolean()) return;
+  if (!node.is_object()) {
+    throw InputError(path.string() + ": key '" + where + "' is " + node.dump() +
+                     ", expected an object");
+  }
+  const std::string& key = segments[at];
+  const auto child = [&](const std::string& name) {
+    return where.empty() ? name : where + "/" + name;
+  };
+  if (key == "*") {
+    for (const auto& [name, value] : node.items()) {
+      CheckNumbers(value, segments, at + 1, child(name), path);
+    }
+  } else if (node.contains(key)) {
+    CheckNumbers(node[key], segments, at + 1, child(key), path);
+  }
+}
+
 nlohmann::json ReadSummary(const std::filesystem::path& path) {
   std::ifstream in(path);
   if (!in) throw InputError("cannot open '" + path.string() + "'");
+  nlohmann::json summary;
   try {
-    nlohmann::json summary = nlohmann::json::parse(in);
-    if (!summary.is_object()) throw InputError(path.string() + ": expected a JSON object");
-    return summary;
+    summary = nlohmann::json::parse(in);
   } catch (const nlohmann::json::parse_error& e) {
     throw InputError(path.string() + ": not valid JSON (" + e.what() + ")");
   }
+  if (!summary.is_object()) throw InputError(path.string() + ": expected a JSON object");
+  for (const char* pattern : kSummaryNumbers) {
+    std::vector<std::string> segments;
+    std::string text = pattern;
+    for (size_t start = 0;;) {
+      const size_t slash = text.find('/', start);
+      segments.push_back(text.substr(start, slash - start));
+      if (slash == std::string::npos) break;
+      start = slash + 1;
+    }
+    CheckNumbers(summary, segments, 0, "", path);
+  }
+  return summary;
 }
 
 }  // namespace
