@@ -20,6 +20,13 @@ std::string Format(const Eigen::Vector2d& p) {
   return s.str();
 }
 
+std::string Metres(double v) {
+  std::ostringstream s;
+  s.precision(2);
+  s << std::fixed << v << " m";
+  return s.str();
+}
+
 // The world inside a ring of occupied cells, on the same lattice: beyond the
 // map the simulator's disc collides and its lidar sees a wall, so neither
 // counts as free space the robot could reach. mit-building-31's free space runs
@@ -51,6 +58,30 @@ grid::OccupancyMap Outside(const grid::OccupancyMap& world,
     }
   }
   return bounded;
+}
+
+// Whether a disc of 'radius_m' at 'center' overlaps a cell that is not free
+// (or lies beyond the map), as the simulator's collision check decides it: a
+// start the planning grid accepts (its cell's centre clears the walls) can
+// still put the disc a few cm into a wall.
+bool DiscOverlapsObstacle(const grid::OccupancyMap& world, const Eigen::Vector2d& center,
+                          double radius_m) {
+  const grid::MapLimits& m = world.limits;
+  const double res = m.resolution();
+  const int reach = static_cast<int>(std::ceil(radius_m / res)) + 1;
+  const grid::CellIndex c = m.CellContaining(center);
+  for (int y = c.y - reach; y <= c.y + reach; ++y) {
+    for (int x = c.x - reach; x <= c.x + reach; ++x) {
+      if (m.Contains({x, y}) && world.cells[m.FlatIndex({x, y})] == grid::CellState::kFree) {
+        continue;
+      }
+      const Eigen::Vector2d lo = m.CellCenter({x, y}).array() - 0.5 * res;
+      const Eigen::Vector2d hi = lo.array() + res;
+      const Eigen::Vector2d nearest = center.cwiseMax(lo).cwiseMin(hi);
+      if ((nearest - center).norm() < radius_m) return true;
+    }
+  }
+  return false;
 }
 
 }  // namespace
@@ -97,12 +128,11 @@ GroundTruth::GroundTruth(const grid::OccupancyMap& world, const std::string& wor
   bare_options.unknown_traversable = false;
   const explore::PlanningMap bare(world, bare_options);
   const grid::CellIndex start_cell = limits_.CellContaining(start);
-  if (!bare.Traversable(start_cell)) {
+  if (!bare.Traversable(start_cell) || DiscOverlapsObstacle(world, start, robot_radius_m)) {
     throw InputError("world '" + world_name + "': the start (" + Format(start) +
                      ") is inside an obstacle, unknown space or too close to a wall for the "
                      "robot (radius " +
-                     std::to_string(robot_radius_m) +
-                     " m); choose a free position with --start X,Y");
+                     Metres(robot_radius_m) + "); choose a free position with --start X,Y");
   }
   LabelDiscComponents(bare);
   if (!boundary.empty() && !explore::InsidePolygon(boundary, start)) {
@@ -131,7 +161,7 @@ GroundTruth::GroundTruth(const grid::OccupancyMap& world, const std::string& wor
   if (!any) {
     throw InputError("world '" + world_name + "': no free space is reachable from the start (" +
                      Format(start) + ") for the robot with its safety margin (" +
-                     std::to_string(traversability.inflation_radius_m()) + " m from walls" +
+                     Metres(traversability.inflation_radius_m()) + " from walls" +
                      (boundary.empty() ? "" : " and from explore.boundary") +
                      "); choose another position with --start X,Y");
   }

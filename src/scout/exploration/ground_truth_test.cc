@@ -156,6 +156,29 @@ TEST(GroundTruthTest, BeyondTheMapIsAWallLikeInTheSimulator) {
   EXPECT_TRUE(truth.DiscCanReach({2.0, 1.5}, {0.3, 1.5}, 0.05));
 }
 
+TEST(GroundTruthTest, AStartWhoseDiscTouchesAWallIsAnInputErrorNamingStart) {
+  // One unknown cell (x 2.00-2.05 m) in a free room: the planning grid
+  // inflates only occupied cells, but the simulator's robot collides with
+  // unknown ones too. From x = 1.825 the disc (radius 0.2 m) reaches 2.5 cm
+  // into it.
+  sim::World w;
+  w.name = "room";
+  w.map.limits = grid::MapLimits(0.05, {0.0, 0.0}, 80, 60);
+  w.map.cells.assign(80 * 60, CellState::kFree);
+  w.map.cells[w.map.limits.FlatIndex({40, 30})] = CellState::kUnknown;
+  w.start = {1.825, 1.525};
+  try {
+    Truth(w);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("choose a free position with --start X,Y"),
+              std::string::npos)
+        << e.what();
+  }
+  w.start = {1.775, 1.525};  // the disc ends 2.5 cm short of the square
+  EXPECT_NO_THROW(Truth(w));
+}
+
 TEST(GroundTruthTest, TheDiscReachesTheOtherRoomButNotTheCloset) {
   const GroundTruth truth = Truth(testing::SmallBuilding());
   EXPECT_TRUE(truth.DiscCanReach({1.5, 1.5}, {7.0, 2.0}, 0.25));
