@@ -236,7 +236,8 @@ CLI::App* AddExploreCommand(CLI::App& app, ExploreArgs* args) {
   cmd->add_option("--world", args->world, "office, museum (generated) or a map_server .yaml")
       ->capture_default_str();
   cmd->add_option("--world-size", args->world_size,
-                  "outer extent of a generated world, W or WxH metres (default: the generator's)");
+                  "outer extent of a generated world, W or WxH metres, at most 1000 (default: the "
+                  "generator's)");
   cmd->add_option("--seed", args->seed, "seed of the generated world and the sensor noise")
       ->capture_default_str()
       ->check(NonNegativeInteger());

@@ -28,7 +28,8 @@ CLI::App* AddFrontierBenchCommand(CLI::App& app, FrontierBenchArgs* args) {
   cmd->add_option("--world", args->world, "office, museum, or a ROS map_server .yaml file")
       ->capture_default_str();
   cmd->add_option("--world-size", args->world_size,
-                  "outer extent of a generated world, W or WxH metres (default: the generator's)");
+                  "outer extent of a generated world, W or WxH metres, at most 1000 (default: the "
+                  "generator's)");
   cmd->add_option("--seed", args->seed, "seed of the world, trajectory, sensor noise and drift")
       ->capture_default_str()
       ->check(NonNegativeInteger());

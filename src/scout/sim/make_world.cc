@@ -29,6 +29,11 @@ WorldSize ParseWorldSize(const std::string& text) {
     throw InputError("world size '" + text +
                      "': expected W or WxH in metres, both > 0 (e.g. 100 or 160x100)");
   }
+  if (*w > kMaxWorldSide_m || *h > kMaxWorldSide_m) {
+    throw InputError("world size '" + text + "': expected sides of at most " +
+                     std::to_string(static_cast<int>(kMaxWorldSide_m)) +
+                     " m (a 500 m museum's synthetic SLAM stream already takes more than 8 GB)");
+  }
   return {*w, *h};
 }
 

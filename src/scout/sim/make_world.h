@@ -15,8 +15,13 @@ struct WorldSize {
   double height_m = 0.0;
 };
 
+// The largest side a generated world may have: 1000 m is 20,000 cells of 5 cm
+// per side. A typo such as 5000 for 500 otherwise runs until memory is gone.
+inline constexpr double kMaxWorldSide_m = 1000.0;
+
 // Parses "W" (a square W x W) or "WxH", metres, e.g. "100" or "160x100".
-// Throws InputError naming 'text' unless both are finite numbers > 0.
+// Throws InputError naming 'text' unless both are finite numbers > 0 and at
+// most kMaxWorldSide_m.
 WorldSize ParseWorldSize(const std::string& text);
 
 // Returns the world named 'name_or_yaml': "office" or "museum" (generated from

@@ -139,6 +139,16 @@ TEST(MakeWorld, SizeOfAMapFileIsAnInputError) {
   EXPECT_THROW(MakeWorld(yaml.string(), 1, WorldSize{50.0, 50.0}), InputError);
 }
 
+TEST(ParseWorldSize, SidesUpToTheLimitAreAccepted) {
+  EXPECT_DOUBLE_EQ(ParseWorldSize("1000x20").width_m, kMaxWorldSide_m);
+  try {
+    ParseWorldSize("5000");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("at most 1000 m"), std::string::npos) << e.what();
+  }
+}
+
 TEST(ParseWorldSize, SquareAndRectangle) {
   const WorldSize square = ParseWorldSize("100");
   EXPECT_DOUBLE_EQ(square.width_m, 100.0);
@@ -149,8 +159,8 @@ TEST(ParseWorldSize, SquareAndRectangle) {
 }
 
 TEST(ParseWorldSize, MalformedIsAnInputError) {
-  for (const char* bad :
-       {"", "x", "0", "-5", "10x", "x10", "10x0", "10y10", "nan", "inf", "1e400", "10x10x10"}) {
+  for (const char* bad : {"", "x", "0", "-5", "10x", "x10", "10x0", "10y10", "nan", "inf", "1e400",
+                          "10x10x10", "1e9", "50x1001"}) {
     EXPECT_THROW(ParseWorldSize(bad), InputError) << bad;
   }
 }
