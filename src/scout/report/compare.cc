@@ -53,6 +53,14 @@ std::string TimeToCoverage(const RunData& run, double fraction) {
   return "–";
 }
 
+// The path driven when coverage first reached 'fraction' (issue 4's measure).
+std::string PathToCoverage(const RunData& run, double fraction) {
+  for (const CoverageSample& c : run.coverage) {
+    if (c.coverage >= fraction) return FormatNumber("%.1f", c.path_length_m);
+  }
+  return "–";
+}
+
 }  // namespace
 
 std::vector<Figure> ComparisonFigures(const std::vector<RunData>& runs) {
@@ -128,6 +136,9 @@ std::string RenderComparison(const std::vector<RunData>& runs, const std::vector
   row("world / dataset", [&](size_t i) { return FirstOf(runs[i], {"world", "dataset"}); });
   row("seed", [&](size_t i) { return FirstOf(runs[i], {"seed"}); });
   row("strategy / goal policy", [&](size_t i) {
+    // scout explore writes both: the frontier strategy and the goal policy.
+    const std::string goals = FirstOf(runs[i], {"goals_policy"});
+    if (goals != "–") return FirstOf(runs[i], {"strategy"}) + " / " + goals;
     std::string policy = FirstOf(runs[i], {"goal_policy", "policy", "strategy"});
     if (policy != "–" || stats[i].empty()) return policy;
     std::string names;
@@ -140,7 +151,7 @@ std::string RenderComparison(const std::vector<RunData>& runs, const std::vector
     if (!run.summary.is_object()) continue;
     for (const auto& [k, v] : run.summary.items()) {
       const bool shown = k == "world" || k == "dataset" || k == "seed" || k == "goal_policy" ||
-                         k == "policy" || k == "strategy";
+                         k == "goals_policy" || k == "policy" || k == "strategy";
       if (v.is_primitive() && !shown && std::find(keys.begin(), keys.end(), k) == keys.end()) {
         keys.push_back(k);
       }
@@ -177,6 +188,8 @@ std::string RenderComparison(const std::vector<RunData>& runs, const std::vector
     });
     row("time to 90 % coverage (s)", [&](size_t i) { return TimeToCoverage(runs[i], 0.9); });
     row("time to 99 % coverage (s)", [&](size_t i) { return TimeToCoverage(runs[i], 0.99); });
+    row("path to 95 % coverage (m)", [&](size_t i) { return PathToCoverage(runs[i], 0.95); });
+    row("path to 99 % coverage (m)", [&](size_t i) { return PathToCoverage(runs[i], 0.99); });
   }
   std::ostringstream body;
   body << "<h2 id=\"runs\">Runs side by side</h2>\n" << HtmlTable(header, rows);

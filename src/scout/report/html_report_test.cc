@@ -91,7 +91,7 @@ TEST(HtmlReport, ExploreRunWithoutFrontierData) {
   const ReportFile* page = FindFile(files, "report.html");
   ASSERT_NE(page, nullptr);
   ExpectSelfContained(page->content);
-  EXPECT_NE(page->content.find("<td>goal_policy</td><td>reachable</td>"), std::string::npos);
+  EXPECT_NE(page->content.find("<td>goals_policy</td><td>nearest</td>"), std::string::npos);
   EXPECT_EQ(page->content.find("Frontier update strategies"), std::string::npos);
   EXPECT_NE(FindFile(files, "figures/coverage_path.svg"), nullptr);
 }
@@ -116,8 +116,22 @@ TEST(Compare, TwoRunsSideBySide) {
                       "<td class=\"num\">50.00</td><td>–</td>"),
             std::string::npos)
       << html;
-  EXPECT_NE(html.find("<td>strategy / goal policy</td>"), std::string::npos);
-  EXPECT_NE(html.find("<td>reachable</td>"), std::string::npos);
+  // The explore run names its frontier strategy and its goal policy; the
+  // frontier runs their strategies.
+  EXPECT_NE(html.find("<td>strategy / goal policy</td><td>full, dfd, direct</td>"
+                      "<td>full, dfd, direct</td>"
+                      "<td>exact / nearest</td>"),
+            std::string::npos)
+      << html;
+  // Coverage 1 - 0.6^i at path 2 * 10 i m: 95 % at i = 6, 99 % at i = 10.
+  EXPECT_NE(html.find("<td>path to 95 % coverage (m)</td><td>–</td><td>–</td>"
+                      "<td class=\"num\">120.0</td>"),
+            std::string::npos)
+      << html;
+  EXPECT_NE(html.find("<td>path to 99 % coverage (m)</td><td>–</td><td>–</td>"
+                      "<td class=\"num\">200.0</td>"),
+            std::string::npos)
+      << html;
   const ReportFile* p = FindFile(files, "figures/compare_p.svg");
   ASSERT_NE(p, nullptr);
   const testing::XmlCheck xml = testing::CheckXml(p->content);

@@ -87,8 +87,9 @@ inline std::filesystem::path WriteExploreRun(const std::string& name, double spe
            std::to_string(1.0 - std::pow(0.6, i)) + "\n";
   }
   WriteTextFileAtomically(dir / "coverage.csv", csv);
-  WriteTextFileAtomically(dir / "summary.json",
-                          R"({"world": "museum", "seed": 3, "goal_policy": "reachable"})");
+  WriteTextFileAtomically(
+      dir / "summary.json",
+      R"({"world": "museum", "seed": 3, "strategy": "exact", "goals_policy": "nearest"})");
   return dir;
 }
 
