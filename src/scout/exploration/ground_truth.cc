@@ -61,9 +61,9 @@ grid::OccupancyMap Outside(const grid::OccupancyMap& world,
 }
 
 // Whether a disc of 'radius_m' at 'center' overlaps a cell that is not free
-// (or lies beyond the map), as the simulator's collision check decides it: a
-// start the planning grid accepts (its cell's centre clears the walls) can
-// still put the disc a few cm into a wall.
+// (or lies beyond the map), as the simulator's collision check decides it: the
+// planning grid inflates only occupied cells, so a start beside unknown cells,
+// which the simulator's robot collides with, passes the planning grid's check.
 bool DiscOverlapsObstacle(const grid::OccupancyMap& world, const Eigen::Vector2d& center,
                           double radius_m) {
   const grid::MapLimits& m = world.limits;

@@ -156,7 +156,7 @@ TEST(GroundTruthTest, BeyondTheMapIsAWallLikeInTheSimulator) {
   EXPECT_TRUE(truth.DiscCanReach({2.0, 1.5}, {0.3, 1.5}, 0.05));
 }
 
-TEST(GroundTruthTest, AStartWhoseDiscTouchesAWallIsAnInputErrorNamingStart) {
+TEST(GroundTruthTest, AStartWhoseDiscOverlapsUnknownSpaceIsAnInputErrorNamingStart) {
   // One unknown cell (x 2.00-2.05 m) in a free room: the planning grid
   // inflates only occupied cells, but the simulator's robot collides with
   // unknown ones too. From x = 1.825 the disc (radius 0.2 m) reaches 2.5 cm
