@@ -106,6 +106,29 @@ TEST(ResultsTables, ExploreRowsAndMeansPerWorldAndPolicy) {
       << md;
 }
 
+TEST(ResultsTables, PWithoutDfdIsAgainstEveryLocalPointOfEveryRound) {
+  // frontier-bench --strategies direct: the summary's P is null, but dfd would
+  // have queried the 100 + 120 + 140 local points of the three rounds.
+  const std::filesystem::path dir = FreshDir("tables_no_dfd");
+  WriteTextFileAtomically(dir / "frontier.csv",
+                          "round,strategy,queried_points,queried_submaps,time_us,tp,fp,tn,fn,"
+                          "local_points\n"
+                          "0,direct,10,1,100,0,0,0,0,100\n"
+                          "1,direct,0,0,5,0,0,0,0,120\n"
+                          "2,direct,30,2,300,0,0,0,0,140\n");
+  WriteTextFileAtomically(dir / "summary.json",
+                          R"({"world": "museum", "optimizations": 3, "frontier": {"strategies":
+                              {"direct": {"queried_points": 40, "time_ms": 0.405, "P": null}}}})");
+  const std::string md = ResultsTables(TableKind::kBench, {dir});
+  EXPECT_TRUE(Contains(md, "| tables_no_dfd | — | direct | 3 | 40 | 13 | 88.9 % |")) << md;
+  // Without local points nothing says what dfd would have queried.
+  WriteTextFileAtomically(dir / "frontier.csv",
+                          "round,strategy,queried_points,queried_submaps,time_us,tp,fp,tn,fn\n"
+                          "0,direct,10,1,100,0,0,0,0\n");
+  EXPECT_TRUE(Contains(ResultsTables(TableKind::kBench, {dir}), "| direct | 1 | 40 | 40 | — |"))
+      << ResultsTables(TableKind::kBench, {dir});
+}
+
 TEST(ResultsTables, RunWithoutCommandIsMarked) {
   const std::filesystem::path dir = WriteFrontierRun("tables_no_command");
   const std::string md = ResultsTables(TableKind::kBench, {dir});
