@@ -9,6 +9,7 @@
 #include "scout/explore/goal_manager.h"
 #include "scout/explore/path_distance_field.h"
 #include "scout/grid/distance_transform.h"
+#include "scout/sim/disc_collision_checker.h"
 
 namespace scout::exploration {
 namespace {
@@ -60,30 +61,6 @@ grid::OccupancyMap Outside(const grid::OccupancyMap& world,
   return bounded;
 }
 
-// Whether a disc of 'radius_m' at 'center' overlaps a cell that is not free
-// (or lies beyond the map), as the simulator's collision check decides it: the
-// planning grid inflates only occupied cells, so a start beside unknown cells,
-// which the simulator's robot collides with, passes the planning grid's check.
-bool DiscOverlapsObstacle(const grid::OccupancyMap& world, const Eigen::Vector2d& center,
-                          double radius_m) {
-  const grid::MapLimits& m = world.limits;
-  const double res = m.resolution();
-  const int reach = static_cast<int>(std::ceil(radius_m / res)) + 1;
-  const grid::CellIndex c = m.CellContaining(center);
-  for (int y = c.y - reach; y <= c.y + reach; ++y) {
-    for (int x = c.x - reach; x <= c.x + reach; ++x) {
-      if (m.Contains({x, y}) && world.cells[m.FlatIndex({x, y})] == grid::CellState::kFree) {
-        continue;
-      }
-      const Eigen::Vector2d lo = m.CellCenter({x, y}).array() - 0.5 * res;
-      const Eigen::Vector2d hi = lo.array() + res;
-      const Eigen::Vector2d nearest = center.cwiseMax(lo).cwiseMin(hi);
-      if ((nearest - center).norm() < radius_m) return true;
-    }
-  }
-  return false;
-}
-
 }  // namespace
 
 GroundTruth::GroundTruth(const grid::OccupancyMap& unwalled_world, const std::string& world_name,
@@ -128,7 +105,10 @@ GroundTruth::GroundTruth(const grid::OccupancyMap& world, const std::string& wor
   bare_options.unknown_traversable = false;
   const explore::PlanningMap bare(world, bare_options);
   const grid::CellIndex start_cell = limits_.CellContaining(start);
-  if (!bare.Traversable(start_cell) || DiscOverlapsObstacle(world, start, robot_radius_m)) {
+  // The planning grid inflates only occupied cells: a start beside unknown
+  // cells passes it, yet the simulator's robot collides with those too.
+  if (!bare.Traversable(start_cell) ||
+      sim::DiscCollisionChecker(world, robot_radius_m).Collides(start)) {
     throw InputError("world '" + world_name + "': the start (" + Format(start) +
                      ") is inside an obstacle, unknown space or too close to a wall for the "
                      "robot (radius " +
