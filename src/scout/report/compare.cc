@@ -47,18 +47,14 @@ std::string FirstOf(const RunData& run, const std::vector<std::string>& keys) {
 }
 
 std::string TimeToCoverage(const RunData& run, double fraction) {
-  for (const CoverageSample& c : run.coverage) {
-    if (c.coverage >= fraction) return FormatNumber("%.1f", c.sim_time_s);
-  }
-  return "–";
+  const CoverageSample* c = FirstReaching(run.coverage, fraction);
+  return c ? FormatNumber("%.1f", c->sim_time_s) : "–";
 }
 
 // The path driven when coverage first reached 'fraction' (issue 4's measure).
 std::string PathToCoverage(const RunData& run, double fraction) {
-  for (const CoverageSample& c : run.coverage) {
-    if (c.coverage >= fraction) return FormatNumber("%.1f", c.path_length_m);
-  }
-  return "–";
+  const CoverageSample* c = FirstReaching(run.coverage, fraction);
+  return c ? FormatNumber("%.1f", c->path_length_m) : "–";
 }
 
 }  // namespace

@@ -239,10 +239,8 @@ void AppendBench(const std::vector<RunData>& runs, std::ostringstream& out) {
 
 // Path length when coverage first reached 'level', from coverage.csv.
 std::optional<double> PathToCoverage(const RunData& run, double level) {
-  for (const CoverageSample& c : run.coverage) {
-    if (c.coverage >= level) return c.path_length_m;
-  }
-  return std::nullopt;
+  const CoverageSample* c = FirstReaching(run.coverage, level);
+  return c ? std::optional<double>(c->path_length_m) : std::nullopt;
 }
 
 // Simulated seconds per wall-clock second of the run.

@@ -115,6 +115,13 @@ nlohmann::json ReadSummary(const std::filesystem::path& path) {
 
 }  // namespace
 
+const CoverageSample* FirstReaching(const std::vector<CoverageSample>& coverage, double fraction) {
+  for (const CoverageSample& c : coverage) {
+    if (c.coverage >= fraction) return &c;
+  }
+  return nullptr;
+}
+
 std::vector<FrontierRound> ReadFrontierCsv(const std::filesystem::path& path) {
   const CsvTable table =
       CsvTable::Read(path, {"round", "strategy", "queried_points", "queried_submaps", "time_us",

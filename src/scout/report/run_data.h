@@ -49,6 +49,9 @@ std::vector<FrontierRound> ReadFrontierCsv(const std::filesystem::path& path);
 // ReadFrontierCsv.
 std::vector<CoverageSample> ReadCoverageCsv(const std::filesystem::path& path);
 
+// Returns the first sample whose coverage reached 'fraction' (0-1), or null.
+const CoverageSample* FirstReaching(const std::vector<CoverageSample>& coverage, double fraction);
+
 // Reads every known output of 'dir'. 'name' defaults to the directory's name.
 // Throws InputError when 'dir' is not a directory, holds none of summary.json,
 // frontier.csv and coverage.csv, or one of them is malformed.
