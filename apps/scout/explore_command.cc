@@ -22,6 +22,7 @@
 #include "scout/io/frontier_report.h"
 #include "scout/io/map_picture.h"
 #include "scout/io/output_directory.h"
+#include "scout/io/plan_picture.h"
 #include "scout/io/trajectory_metrics.h"
 #include "scout/io/tum_trajectory.h"
 #include "scout/sim/lidar.h"
@@ -161,14 +162,24 @@ nlohmann::json Summary(const ExploreArgs& args, const exploration::ExplorationLo
                 {"reachable_frontier_left", r.reachable_frontier_left},
                 {"visited_frontier_left", r.visited_frontier_left}};
   // Where each goal the true world made unreachable was, and the robot then
-  // (world frame), so they can be found on the map.
+  // (world frame), so they can be found on the map; and the goal, target and
+  // robot as the map had them (*_map, in the frame of map.yaml and
+  // trajectory.tum): a point the map had in the open but the world has
+  // inside a wall tells a SLAM error from a planning one.
   nlohmann::json unreachable = nlohmann::json::array();
+  const geometry::Rigid2d& world_from_map = loop.world_from_map();
   for (const exploration::IssuedGoal& g : r.goals) {
     if (g.reachable_in_truth) continue;
+    const Eigen::Vector2d goal_map = world_from_map * g.goal_map;
+    const Eigen::Vector2d target_map = world_from_map * g.target_map;
+    const Eigen::Vector2d robot_map = world_from_map * g.robot_map;
     unreachable.push_back({{"sim_time_s", g.sim_time_s},
                            {"goal", {g.goal_world.x(), g.goal_world.y()}},
                            {"target", {g.target_world.x(), g.target_world.y()}},
-                           {"robot", {g.robot_world.x(), g.robot_world.y()}}});
+                           {"robot", {g.robot_world.x(), g.robot_world.y()}},
+                           {"goal_map", {goal_map.x(), goal_map.y()}},
+                           {"target_map", {target_map.x(), target_map.y()}},
+                           {"robot_map", {robot_map.x(), robot_map.y()}}});
   }
   s["unreachable_goals"] = unreachable;
   // Frontier the policy gave up on (ended no_progress with it left): where.
@@ -314,6 +325,12 @@ int RunExplore(const ExploreArgs& args) {
   io::WriteTumTrajectory(truth, out.Stage("truth.tum"));
   io::WriteFrontierCsv(loop.frontier_engine(), out.Stage("frontier.csv"));
   WriteCoverageCsv(result.coverage_samples, out.Stage("coverage.csv"));
+  int snapshots = 0;
+  for (const exploration::IssuedGoal& g : result.goals) {
+    if (g.map_then == nullptr) continue;
+    io::WritePlanPicture(*g.map_then, {g.robot_map, g.goal_map, g.target_map, g.path_map},
+                         out.Stage("unreachable-goal-" + std::to_string(++snapshots) + ".png"));
+  }
   const std::filesystem::path summary_path = out.Stage("summary.json");
   WriteTextFileAtomically(summary_path, summary.dump(2) + "\n");
   // The report reads the staged outputs and is committed together with them.
@@ -337,7 +354,11 @@ int RunExplore(const ExploreArgs& args) {
             << "outputs: " << (out.path() / "summary.json").string()
             << ", map.yaml, map.pgm, map.png, coverage.png, trajectory.tum, truth.tum, "
                "frontier.csv, coverage.csv, report.html, figures/"
-            << (log ? ", sensor.log" : "") << "\n";
+            << (log ? ", sensor.log" : "")
+            << (snapshots > 0 ? ", unreachable-goal-*.png (the map each goal the true world made "
+                                "unreachable was chosen on)"
+                              : "")
+            << "\n";
   return 0;
 }
 

@@ -290,21 +290,28 @@ std::vector<Eigen::Vector2d> ExplorationLoop::MapPointsInWorld(
 }
 
 void ExplorationLoop::RecordIssuedGoal(const Eigen::Vector2d& goal_map,
-                                       const Eigen::Vector2d& target_map) {
+                                       const Eigen::Vector2d& target_map,
+                                       const std::vector<Eigen::Vector2d>& path_map) {
   IssuedGoal g;
   g.sim_time_s = robot_.sim_time_s();
   const std::vector<Eigen::Vector2d> world = MapPointsInWorld({goal_map, target_map});
   g.goal_world = world[0];
   g.target_world = world[1];
   g.goal_map = goal_map;
+  g.target_map = target_map;
   g.robot_world = robot_.true_pose().translation();
+  g.robot_map = EstimatedPose().translation();
   // Reached means within the follower's tolerance, so that is the slack.
   const double tolerance_m = options_.explore.follower.goal_tolerance_m;
   g.reachable_in_truth = truth_.DiscCanReach(g.robot_world, g.target_world, tolerance_m);
   g.point_reachable_in_truth = truth_.DiscCanReach(g.robot_world, g.goal_world, tolerance_m);
+  if (!g.reachable_in_truth && result_.unreachable_goals < kMaxUnreachableSnapshots) {
+    g.map_then = std::make_shared<const grid::OccupancyMap>(fused_map_);
+    g.path_map = path_map;
+  }
   result_.unreachable_goals += !g.reachable_in_truth;
   result_.unreachable_points += !g.point_reachable_in_truth;
-  result_.goals.push_back(g);
+  result_.goals.push_back(std::move(g));
 }
 
 std::optional<Termination> ExplorationLoop::CheckTermination(
@@ -370,7 +377,7 @@ ExplorationResult ExplorationLoop::Run(const ProgressCallback& progress,
       status = goals_.Update(in);
       result_.timings.goals_s += watch.ElapsedUs() * 1e-6;
       if (goals_.counters().goals_issued > issued_before && status.goal && status.target) {
-        RecordIssuedGoal(*status.goal, *status.target);
+        RecordIssuedGoal(*status.goal, *status.target, status.path);
       }
     }
     if (t >= next_sample_s) {

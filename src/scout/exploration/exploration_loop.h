@@ -55,14 +55,23 @@ struct IssuedGoal {
   // The navigation point in the map frame as it was when issued (for
   // pictures of the estimated map).
   Eigen::Vector2d goal_map = Eigen::Vector2d::Zero();
+  Eigen::Vector2d target_map = Eigen::Vector2d::Zero();
   Eigen::Vector2d robot_world = Eigen::Vector2d::Zero();  // true position then
+  Eigen::Vector2d robot_map = Eigen::Vector2d::Zero();    // estimated position then
   // False when the bare disc could not get within the goal tolerance of the
   // target from where it stood: the robot was sent somewhere it cannot be.
   bool reachable_in_truth = true;
   // The same for the navigation point itself (a frontier point on the edge
   // of unseen furniture is not; the stand-off exists for those).
   bool point_reachable_in_truth = true;
+  // For the first kMaxUnreachableSnapshots goals not reachable in truth: the
+  // fused map the goal was chosen on and the path planned to it (map frame),
+  // so the picture of what the robot believed outlives later optimisations.
+  std::shared_ptr<const grid::OccupancyMap> map_then;
+  std::vector<Eigen::Vector2d> path_map;
 };
+
+inline constexpr int kMaxUnreachableSnapshots = 3;
 
 struct ExplorationProgress {
   double sim_time_s = 0.0;
@@ -195,7 +204,8 @@ class ExplorationLoop {
   // Waits for the coverage measurement in flight, if any, and records it: in
   // result_ and in the coverage samples taken since it started.
   void CompleteCoverage();
-  void RecordIssuedGoal(const Eigen::Vector2d& goal_map, const Eigen::Vector2d& target_map);
+  void RecordIssuedGoal(const Eigen::Vector2d& goal_map, const Eigen::Vector2d& target_map,
+                        const std::vector<Eigen::Vector2d>& path_map);
   std::optional<Termination> CheckTermination(const explore::ExploreStatus& status) const;
 
   const ExplorationOptions options_;
