@@ -80,6 +80,11 @@ TEST_F(ScoutCli, BadInputsNameWhatIsWrongAndLeaveNoOutputs) {
   r = RunScout("frontier-bench --strategies dfd,magic --world office" + o);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find("'magic'"), std::string::npos) << r.output;
+  r = RunScout("frontier-bench --strategies bfs --picture-strategy exact --world office" + o);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("--picture-strategy 'exact': not among the strategies that run (bfs)"),
+            std::string::npos)
+      << r.output;
   r = RunScout("frontier-bench --epsilon -1 --world office" + o);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find("epsilon_m"), std::string::npos) << r.output;
@@ -131,6 +136,21 @@ TEST_F(ScoutCli, FrontierBenchWritesConsistentOutputs) {
   int rows = 0;
   for (std::string line; std::getline(csv, line);) ++rows;
   EXPECT_EQ(rows, 5 * summary["optimizations"].get<int>());
+}
+
+TEST_F(ScoutCli, WithoutExactThePictureShowsTheFirstNamedStrategy) {
+  // The default picture strategy is exact; a run without it used to stop
+  // with "frontier strategy 'exact' is not running in this engine".
+  const fs::path out = dir_ / "out";
+  const Result r =
+      RunScout("frontier-bench --quiet --no-reference --strategies bfs,direct --world " +
+               (dir_ / "rooms.yaml").string() + " --seed 3 --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(fs::exists(out / "frontiers.png"));
+  std::ifstream in(out / "summary.json");
+  const nlohmann::json summary = nlohmann::json::parse(in);
+  EXPECT_TRUE(summary["frontier"]["strategies"].contains("bfs"));
+  EXPECT_FALSE(summary["frontier"]["strategies"].contains("exact"));
 }
 
 TEST_F(ScoutCli, FrontierBenchWithoutReferenceRunsOnlyTheNamedStrategies) {

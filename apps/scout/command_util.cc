@@ -1,10 +1,13 @@
 #include "apps/scout/command_util.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <iomanip>
 #include <sstream>
+
+#include "scout/common/error.h"
 
 namespace scout::apps {
 
@@ -44,6 +47,26 @@ std::vector<std::string> SplitList(const std::string& list) {
     if (!item.empty()) items.push_back(item);
   }
   return items;
+}
+
+std::string PictureStrategy(const std::string& requested,
+                            const std::vector<std::string>& strategies,
+                            const frontier::FrontierEngine& engine) {
+  std::string name = requested;
+  if (name.empty()) {
+    const bool has_exact =
+        std::find(strategies.begin(), strategies.end(), "exact") != strategies.end();
+    name = has_exact || strategies.empty() ? "exact" : strategies.front();
+  }
+  try {
+    engine.strategy(name);
+  } catch (const InputError&) {
+    std::string running;
+    for (const std::string& s : strategies) running += (running.empty() ? "" : ",") + s;
+    throw InputError("--picture-strategy '" + name + "': not among the strategies that run (" +
+                     running + ")");
+  }
+  return name;
 }
 
 void PrintStrategyTable(const frontier::FrontierEngine& engine, std::ostream& out) {

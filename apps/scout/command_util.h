@@ -26,6 +26,13 @@ CLI::Validator NonNegativeFiniteNumber();
 // Splits a comma-separated list, dropping empty items.
 std::vector<std::string> SplitList(const std::string& list);
 
+// The strategy whose frontier frontiers.png shows: 'requested' when given,
+// else exact when it runs, else the first of 'strategies'. Throws InputError
+// naming --picture-strategy when that one does not run in 'engine'.
+std::string PictureStrategy(const std::string& requested,
+                            const std::vector<std::string>& strategies,
+                            const frontier::FrontierEngine& engine);
+
 // Prints one line per strategy: queried points, P, accuracy, precision,
 // recall and total update time.
 void PrintStrategyTable(const frontier::FrontierEngine& engine, std::ostream& out);

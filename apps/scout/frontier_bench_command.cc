@@ -40,8 +40,8 @@ CLI::App* AddFrontierBenchCommand(CLI::App& app, FrontierBenchArgs* args) {
   cmd->add_option("--strategies", args->strategies, "comma-separated strategies to run")
       ->capture_default_str();
   cmd->add_option("--picture-strategy", args->picture_strategy,
-                  "strategy whose frontier and last re-queried submaps frontiers.png shows")
-      ->capture_default_str();
+                  "strategy whose frontier and last re-queried submaps frontiers.png shows "
+                  "(default: exact if it runs, else the first of --strategies)");
   cmd->add_flag("--no-reference", args->no_reference,
                 "do not run full recomputation (which dominates the run time in large worlds); "
                 "accuracy, precision and recall are then not measured");
@@ -58,7 +58,7 @@ int RunFrontierBench(const FrontierBenchArgs& args) {
   const std::vector<std::string> strategies = SplitList(args.strategies);
   // Validates options and names before any long work or any output.
   frontier::FrontierEngine engine(config.frontier, strategies, /*evaluate=*/!args.no_reference);
-  engine.strategy(args.picture_strategy);
+  const std::string picture_strategy = PictureStrategy(args.picture_strategy, strategies, engine);
   const std::optional<sim::WorldSize> world_size =
       args.world_size.empty() ? std::nullopt
                               : std::optional<sim::WorldSize>(sim::ParseWorldSize(args.world_size));
@@ -88,7 +88,7 @@ int RunFrontierBench(const FrontierBenchArgs& args) {
   summary["optimizations"] = engine.optimizations();
   summary["local_frontier_points"] = engine.catalog().total_points();
   summary["global_frontier_points"] =
-      engine.GlobalFrontier(args.no_reference ? args.picture_strategy : "full").size();
+      engine.GlobalFrontier(args.no_reference ? picture_strategy : "full").size();
   summary["reference"] = !args.no_reference;
   summary["scans"] = stats.scans;
   summary["loop_closures"] = stats.loop_closures;
@@ -102,7 +102,7 @@ int RunFrontierBench(const FrontierBenchArgs& args) {
   summary["wall_time_s"] = wall.ElapsedUs() * 1e-6;
 
   io::WriteFrontierCsv(engine, out.Stage("frontier.csv"));
-  io::WriteFrontierPicture(engine, args.picture_strategy, out.Stage("frontiers.png"));
+  io::WriteFrontierPicture(engine, picture_strategy, out.Stage("frontiers.png"));
   const std::filesystem::path summary_path = out.Stage("summary.json");
   WriteTextFileAtomically(summary_path, summary.dump(2) + "\n");
   // The report reads the staged outputs and is committed together with them.

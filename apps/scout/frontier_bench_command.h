@@ -16,7 +16,7 @@ struct FrontierBenchArgs {
   std::string config_file;
   std::optional<double> epsilon_m;
   std::string strategies = "full,dfd,bfs,direct,exact";
-  std::string picture_strategy = "exact";
+  std::string picture_strategy;  // empty: exact if it runs, else the first strategy
   bool quiet = false;
   // Skip full recomputation (the reference): no accuracy, precision or recall.
   bool no_reference = false;

@@ -148,9 +148,10 @@ CLI::App* AddReplayCommand(CLI::App& app, ReplayArgs* args) {
                   "reference (paired by identical range readings)");
   cmd->add_option("--strategies", args->strategies, "comma-separated strategies to run")
       ->capture_default_str();
-  cmd->add_option("--picture-strategy", args->picture_strategy,
-                  "strategy whose frontier frontiers.png shows")
-      ->capture_default_str();
+  cmd->add_option(
+      "--picture-strategy", args->picture_strategy,
+      "strategy whose frontier frontiers.png shows (default: exact if it runs, else the "
+      "first of --strategies)");
   cmd->add_option("--scan-topic", args->scan_topic, "bags: LaserScan topic (default: detected)");
   cmd->add_option("--odom-topic", args->odometry_topic, "bags: Odometry topic (default: detected)");
   cmd->add_option("--odom-noise", args->odom_noise,
@@ -175,8 +176,9 @@ int RunReplay(const ReplayArgs& args) {
   io::ScoutConfig config = LoadConfigOrDefaults(args.config_file);
   if (args.synchronous) config.slam.pose_graph.synchronous = true;
   // Validates options and names before any long work or any output.
-  frontier::FrontierEngine engine(config.frontier, SplitList(args.strategies), /*evaluate=*/true);
-  engine.strategy(args.picture_strategy);
+  const std::vector<std::string> strategies = SplitList(args.strategies);
+  frontier::FrontierEngine engine(config.frontier, strategies, /*evaluate=*/true);
+  const std::string picture_strategy = PictureStrategy(args.picture_strategy, strategies, engine);
 
   io::Dataset dataset = io::LoadDataset(args.dataset, {args.scan_topic, args.odometry_topic});
   PrintWarnings(dataset);
@@ -298,7 +300,7 @@ int RunReplay(const ReplayArgs& args) {
     io::WriteTumTrajectory(paired_reference, out.Stage("reference.tum"));
   }
   io::WriteFrontierCsv(engine, out.Stage("frontier.csv"));
-  io::WriteFrontierPicture(engine, args.picture_strategy, out.Stage("frontiers.png"));
+  io::WriteFrontierPicture(engine, picture_strategy, out.Stage("frontiers.png"));
   const std::filesystem::path summary_path = out.Stage("summary.json");
   WriteTextFileAtomically(summary_path, summary.dump(2) + "\n");
   // The report reads the staged outputs and is committed together with them.

@@ -13,7 +13,7 @@ struct ReplayArgs {
   std::string config_file;
   std::string reference;
   std::string strategies = "full,dfd,bfs,direct,exact";
-  std::string picture_strategy = "exact";
+  std::string picture_strategy;  // empty: exact if it runs, else the first strategy
   std::string scan_topic;
   std::string odometry_topic;
   double odom_noise = 0.0;
