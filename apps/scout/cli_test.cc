@@ -147,6 +147,10 @@ TEST_F(ScoutCli, WithoutExactThePictureShowsTheFirstNamedStrategy) {
                (dir_ / "rooms.yaml").string() + " --seed 3 --out " + out.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_TRUE(fs::exists(out / "frontiers.png"));
+  // Without dfd there is no P, without "full" no scores: dashes, not "nan"
+  // or an unscored 1.0000.
+  EXPECT_EQ(r.output.find("nan"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("1.0000"), std::string::npos) << r.output;
   std::ifstream in(out / "summary.json");
   const nlohmann::json summary = nlohmann::json::parse(in);
   EXPECT_TRUE(summary["frontier"]["strategies"].contains("bfs"));

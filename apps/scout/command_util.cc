@@ -74,11 +74,24 @@ void PrintStrategyTable(const frontier::FrontierEngine& engine, std::ostream& ou
       << std::setw(10) << "P" << std::setw(10) << "accuracy" << std::setw(11) << "precision"
       << std::setw(9) << "recall" << std::setw(11) << "time_ms"
       << "\n";
+  // Not measured prints as a dash: P without dfd, the scores without "full"
+  // to score against (an unscored strategy would read 1.0000).
+  const auto figure = [](double value, bool measured) {
+    std::ostringstream text;
+    if (measured && std::isfinite(value)) {
+      text << std::fixed << std::setprecision(4) << value;
+    } else {
+      text << "-";
+    }
+    return text.str();
+  };
+  const bool scored = engine.evaluating();
   for (const frontier::StrategyTotals& t : engine.Totals()) {
     out << std::left << std::setw(8) << t.strategy << std::right << std::setw(14)
-        << t.queried_points << std::fixed << std::setprecision(4) << std::setw(10)
-        << t.performance_p << std::setw(10) << t.confusion.accuracy() << std::setw(11)
-        << t.confusion.precision() << std::setw(9) << t.confusion.recall() << std::setprecision(1)
+        << t.queried_points << std::setw(10) << figure(t.performance_p, true) << std::setw(10)
+        << figure(t.confusion.accuracy(), scored) << std::setw(11)
+        << figure(t.confusion.precision(), scored) << std::setw(9)
+        << figure(t.confusion.recall(), scored) << std::fixed << std::setprecision(1)
         << std::setw(11) << t.time_ms << "\n";
   }
 }

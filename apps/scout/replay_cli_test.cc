@@ -159,6 +159,18 @@ TEST_F(ReplayCli, LogWithoutTimesIsReplayedScanByScan) {
   EXPECT_LT(s["reference"]["ate_rmse_m"].get<double>(), 0.10) << s["reference"].dump();
 }
 
+// One scan has no earlier scan to agree with: its consistency is not
+// measured, and says so (it printed "nan mm").
+TEST_F(ReplayCli, ASingleScanHasNoConsistencyFigure) {
+  const fs::path out = Dir() / "one";
+  const Result r = RunScout("replay " + Log() + " --max-scans 1 --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("scan consistency: - mm"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("nan"), std::string::npos) << r.output;
+  const nlohmann::json s = nlohmann::json::parse(ReadFile(out / "summary.json"));
+  EXPECT_TRUE(s["consistency"]["estimate_mean_distance_m"].is_null()) << s["consistency"].dump();
+}
+
 TEST_F(ReplayCli, SynchronousModeIsDeterministic) {
   const fs::path a = Dir() / "d1", b = Dir() / "d2";
   const std::string common = "replay " + Log() + " --synchronous --odom-noise 1 --seed 3 --quiet";

@@ -323,10 +323,11 @@ int RunReplay(const ReplayArgs& args) {
   }
   {
     const nlohmann::json& c = summary["consistency"];
-    // Millimetres; null (no scan had a pair) prints as a dash.
+    // Millimetres; not measured (no scan had a pair: NaN here, null in the
+    // file) prints as a dash.
     const auto mm = [](const nlohmann::json& v) {
       std::ostringstream text;
-      if (v.is_number()) {
+      if (v.is_number() && std::isfinite(v.get<double>())) {
         text << std::fixed << std::setprecision(1) << v.get<double>() * 1000.0;
       } else {
         text << "-";
