@@ -11,7 +11,9 @@ namespace scout::io {
 namespace {
 
 constexpr int kMarginCells = 40;
-constexpr int kPixelsPerCell = 4;
+// A long plan across a large map would make a picture of tens of megapixels:
+// fewer pixels per cell keep its larger side near 2400 pixels at most.
+constexpr int kMaxSidePx = 2400;
 using Rgb = std::array<uint8_t, 3>;
 
 }  // namespace
@@ -36,16 +38,17 @@ void WritePlanPicture(const grid::OccupancyMap& map, const PlannedGoal& planned,
   x1 = std::clamp(x1 + kMarginCells, x0, limits.width() - 1);
   y1 = std::clamp(y1 + kMarginCells, y0, limits.height() - 1);
 
+  const int pixels_per_cell = std::clamp(kMaxSidePx / std::max(x1 - x0 + 1, y1 - y0 + 1), 1, 4);
   grid::Image image;
-  image.width = (x1 - x0 + 1) * kPixelsPerCell;
-  image.height = (y1 - y0 + 1) * kPixelsPerCell;
+  image.width = (x1 - x0 + 1) * pixels_per_cell;
+  image.height = (y1 - y0 + 1) * pixels_per_cell;
   image.channels = 3;
   image.pixels.assign(static_cast<size_t>(image.width) * image.height * 3, 0);
   const auto paint = [&](int x, int y, const Rgb& rgb) {
     if (x < x0 || x > x1 || y < y0 || y > y1) return;
-    for (int dy = 0; dy < kPixelsPerCell; ++dy) {
-      for (int dx = 0; dx < kPixelsPerCell; ++dx) {
-        uint8_t* px = image.at((x - x0) * kPixelsPerCell + dx, (y1 - y) * kPixelsPerCell + dy);
+    for (int dy = 0; dy < pixels_per_cell; ++dy) {
+      for (int dx = 0; dx < pixels_per_cell; ++dx) {
+        uint8_t* px = image.at((x - x0) * pixels_per_cell + dx, (y1 - y) * pixels_per_cell + dy);
         std::copy(rgb.begin(), rgb.end(), px);
       }
     }

@@ -20,7 +20,8 @@ struct PlannedGoal {
 };
 
 // Writes a PNG of 'map' around the robot, the goal, the target and the path
-// (40 cells of margin, 4 pixels per cell, north up): free white, occupied
+// (40 cells of margin, north up; 4 pixels per cell, fewer where that would
+// make a side longer than 2400 pixels): free white, occupied
 // black, unknown grey, the path blue, the robot green, the target orange and
 // the goal red. For goals the true world made unreachable: the map they were
 // chosen on shows whether a gap in a wall or a misplaced wall let them in.

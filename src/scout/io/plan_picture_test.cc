@@ -51,6 +51,26 @@ TEST(WritePlanPicture, DrawsTheMapAroundThePlanWithRobotGoalAndPath) {
   EXPECT_TRUE(is(cell(70, 50), 200, 200, 200));  // unknown
 }
 
+TEST(WritePlanPicture, ALongPlanGetsFewerPixelsPerCell) {
+  const grid::TestTempDirectory dir;
+  grid::OccupancyMap map;
+  map.limits = grid::MapLimits(0.1, {0.0, 0.0}, 2000, 100);
+  map.cells.assign(2000 * 100, grid::CellState::kFree);
+  PlannedGoal planned;
+  planned.robot = {1.05, 5.05};
+  planned.goal = planned.target = {198.05, 5.05};
+  planned.path = {planned.robot, planned.goal};
+  const auto path = dir.path() / "long.png";
+  WritePlanPicture(map, planned, path);
+  const grid::Image image = grid::ReadImage(path);
+  // Columns 0..1999 (clipped), rows 10..90 (row 50 and 40 of margin):
+  // 2400 / 2000 rounds down to 1 pixel per cell.
+  EXPECT_EQ(image.width, 2000);
+  EXPECT_EQ(image.height, 81);
+  EXPECT_EQ(image.at(1000, 90 - 50)[2], 255);  // the path, blue
+  EXPECT_EQ(image.at(1000, 90 - 50)[0], 0);
+}
+
 TEST(WritePlanPicture, AnEmptyMapIsAnError) {
   const grid::TestTempDirectory dir;
   EXPECT_THROW(WritePlanPicture(grid::OccupancyMap{}, PlannedGoal{}, dir.path() / "p.png"),
