@@ -82,8 +82,9 @@ TEST_F(ScoutCli, BadInputsNameWhatIsWrongAndLeaveNoOutputs) {
   EXPECT_NE(r.output.find("'magic'"), std::string::npos) << r.output;
   r = RunScout("frontier-bench --strategies bfs --picture-strategy exact --world office" + o);
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.output.find("--picture-strategy 'exact': not among the strategies that run (bfs)"),
-            std::string::npos)
+  EXPECT_NE(
+      r.output.find("--picture-strategy 'exact': not among the strategies that run (full,bfs)"),
+      std::string::npos)
       << r.output;
   r = RunScout("frontier-bench --epsilon -1 --world office" + o);
   EXPECT_EQ(r.exit_code, 2);

@@ -62,7 +62,8 @@ std::string PictureStrategy(const std::string& requested,
     engine.strategy(name);
   } catch (const InputError&) {
     std::string running;
-    for (const std::string& s : strategies) running += (running.empty() ? "" : ",") + s;
+    for (const std::string& s : engine.strategy_names())
+      running += (running.empty() ? "" : ",") + s;
     throw InputError("--picture-strategy '" + name + "': not among the strategies that run (" +
                      running + ")");
   }

@@ -209,6 +209,15 @@ TEST_F(ReplayCli, BadInputIsAClearErrorWithoutPartialOutputs) {
         << bad << ": " << r.output;
     EXPECT_FALSE(fs::exists(out / "summary.json")) << bad;
   }
+  // replay always runs full recomputation to score against: it is listed.
+  r = RunScout("replay " + Log() + " --strategies bfs --picture-strategy exact --out " +
+               out.string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(
+      r.output.find("--picture-strategy 'exact': not among the strategies that run (full,bfs)"),
+      std::string::npos)
+      << r.output;
+  EXPECT_FALSE(fs::exists(out / "summary.json"));
   r = RunScout("replay " + Log() + " --strategies exact,magic --out " + out.string());
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("magic"), std::string::npos) << r.output;
