@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 #include "scout/common/error.h"
@@ -70,23 +71,25 @@ std::string PictureStrategy(const std::string& requested,
   return name;
 }
 
+std::string FixedOrDash(double value, int decimals) {
+  if (!std::isfinite(value)) return "-";
+  std::ostringstream text;
+  text << std::fixed << std::setprecision(decimals) << value;
+  return text.str();
+}
+
 void PrintStrategyTable(const frontier::FrontierEngine& engine, std::ostream& out) {
   out << std::left << std::setw(8) << "strategy" << std::right << std::setw(14) << "queried_pts"
       << std::setw(10) << "P" << std::setw(10) << "accuracy" << std::setw(11) << "precision"
       << std::setw(9) << "recall" << std::setw(11) << "time_ms"
       << "\n";
-  // Not measured prints as a dash: P without dfd, the scores without "full"
-  // to score against (an unscored strategy would read 1.0000).
-  const auto figure = [](double value, bool measured) {
-    std::ostringstream text;
-    if (measured && std::isfinite(value)) {
-      text << std::fixed << std::setprecision(4) << value;
-    } else {
-      text << "-";
-    }
-    return text.str();
-  };
+  // Not measured prints as a dash: P without dfd (NaN), the scores without
+  // "full" to score against (an unscored strategy would read 1.0000).
+  const double unscored = std::numeric_limits<double>::quiet_NaN();
   const bool scored = engine.evaluating();
+  const auto figure = [&](double value, bool measured) {
+    return FixedOrDash(measured ? value : unscored, 4);
+  };
   for (const frontier::StrategyTotals& t : engine.Totals()) {
     out << std::left << std::setw(8) << t.strategy << std::right << std::setw(14)
         << t.queried_points << std::setw(10) << figure(t.performance_p, true) << std::setw(10)

@@ -33,6 +33,10 @@ std::string PictureStrategy(const std::string& requested,
                             const std::vector<std::string>& strategies,
                             const frontier::FrontierEngine& engine);
 
+// 'value' in fixed notation with 'decimals' decimals, or "-" when it was not
+// measured (not finite): the commands' tables and summary lines print no "nan".
+std::string FixedOrDash(double value, int decimals);
+
 // Prints one line per strategy: queried points, P, accuracy, precision,
 // recall and total update time.
 void PrintStrategyTable(const frontier::FrontierEngine& engine, std::ostream& out);

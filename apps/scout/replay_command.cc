@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -326,13 +327,8 @@ int RunReplay(const ReplayArgs& args) {
     // Millimetres; not measured (no scan had a pair: NaN here, null in the
     // file) prints as a dash.
     const auto mm = [](const nlohmann::json& v) {
-      std::ostringstream text;
-      if (v.is_number() && std::isfinite(v.get<double>())) {
-        text << std::fixed << std::setprecision(1) << v.get<double>() * 1000.0;
-      } else {
-        text << "-";
-      }
-      return text.str();
+      return FixedOrDash(
+          v.is_number() ? v.get<double>() * 1000.0 : std::numeric_limits<double>::quiet_NaN(), 1);
     };
     std::cout << "scan consistency: " << mm(c["estimate_mean_distance_m"])
               << " mm from each scan's returns to the " << c["previous_scans"].get<int>()
