@@ -21,6 +21,12 @@ namespace fs = std::filesystem;
 using Result = scout::testing::CliResult;
 using scout::testing::RunScout;
 
+// The summary.json an output directory holds.
+nlohmann::json ReadSummary(const fs::path& out) {
+  std::ifstream in(out / "summary.json");
+  return nlohmann::json::parse(in);
+}
+
 class ScoutCli : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -112,8 +118,7 @@ TEST_F(ScoutCli, FrontierBenchWritesConsistentOutputs) {
   EXPECT_EQ(names, (std::vector<std::string>{"figures", "frontier.csv", "frontiers.png",
                                              "report.html", "summary.json"}));
   EXPECT_TRUE(fs::exists(out / "figures" / "queried_points.svg"));
-  std::ifstream in(out / "summary.json");
-  const nlohmann::json summary = nlohmann::json::parse(in);
+  const nlohmann::json summary = ReadSummary(out);
   EXPECT_GT(summary["submaps"].get<int>(), 1);
   EXPECT_GT(summary["optimizations"].get<int>(), 0);
   const nlohmann::json& s = summary["frontier"]["strategies"];
@@ -152,8 +157,7 @@ TEST_F(ScoutCli, WithoutExactThePictureShowsTheFirstNamedStrategy) {
   // or an unscored 1.0000.
   EXPECT_EQ(r.output.find("nan"), std::string::npos) << r.output;
   EXPECT_EQ(r.output.find("1.0000"), std::string::npos) << r.output;
-  std::ifstream in(out / "summary.json");
-  const nlohmann::json summary = nlohmann::json::parse(in);
+  const nlohmann::json summary = ReadSummary(out);
   EXPECT_TRUE(summary["frontier"]["strategies"].contains("bfs"));
   EXPECT_FALSE(summary["frontier"]["strategies"].contains("exact"));
 }
@@ -164,8 +168,7 @@ TEST_F(ScoutCli, FrontierBenchWithoutReferenceRunsOnlyTheNamedStrategies) {
       RunScout("frontier-bench --quiet --no-reference --strategies dfd,exact --world " +
                (dir_ / "rooms.yaml").string() + " --seed 3 --out " + out.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  std::ifstream in(out / "summary.json");
-  const nlohmann::json summary = nlohmann::json::parse(in);
+  const nlohmann::json summary = ReadSummary(out);
   EXPECT_FALSE(summary["reference"].get<bool>());
   const nlohmann::json& s = summary["frontier"]["strategies"];
   EXPECT_FALSE(s.contains("full"));
