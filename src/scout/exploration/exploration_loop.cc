@@ -41,6 +41,10 @@ explore::GoalManagerOptions GoalOptionsInMapFrame(const ExplorationOptions& opti
   return goals;
 }
 
+// Returns farther than this from the robot cannot be reached while backing
+// up within the guard's horizon (0.15 m/s for 1 s, plus the disc).
+constexpr double kRecentReturnsRadiusM = 1.0;
+
 std::vector<std::string> EngineStrategies(const ExploreOptions& e) { return {e.strategy}; }
 
 }  // namespace
@@ -70,6 +74,7 @@ ExplorationLoop::ExplorationLoop(const sim::World& world, const ExplorationOptio
              options_.explore.planner, options_.explore.follower,
              explore::MakeGoalPolicy(options_.explore.goal_policy, options_.explore.policy)),
       world_from_map_(robot_.true_pose()),
+      recent_returns_(options_.explore.goals.guard.memory_s, kRecentReturnsRadiusM),
       fusion_(options_.slam.local.submaps.resolution_m),
       map_progress_(options_.explore.min_map_gain_m2) {
   // Local SLAM's frame starts at the first scan's pose, which is the start.
@@ -114,6 +119,7 @@ void ExplorationLoop::FeedSensorsUntimed() {
     last_local_ = local.last_pose();
     odometry_at_last_local_ = latest_odometry_;
   }
+  recent_returns_.Add(scan->time_s, LocalPose(), latest_returns_);
   if (inserted || slam_changed_) {
     // The newest node ties the local frame to the global one; optimisations
     // move it, so it is re-read after every insertion or event (alone: a
@@ -129,7 +135,12 @@ void ExplorationLoop::FeedSensorsUntimed() {
 }
 
 geometry::Rigid2d ExplorationLoop::EstimatedPose() const {
+  // Multiplied in this order as before LocalPose() existed: runs stay the same bit for bit.
   return global_from_local_ * last_local_ * (odometry_at_last_local_.inverse() * latest_odometry_);
+}
+
+geometry::Rigid2d ExplorationLoop::LocalPose() const {
+  return last_local_ * (odometry_at_last_local_.inverse() * latest_odometry_);
 }
 
 bool ExplorationLoop::MaybeUpdateMap(bool force) {
@@ -372,6 +383,7 @@ ExplorationResult ExplorationLoop::Run(const ProgressCallback& progress,
       in.submaps = submap_poses_;
       in.map_changed = changed;
       in.obstacles = &latest_returns_;
+      in.recent_returns = [this] { return recent_returns_.Around(LocalPose()); };
       in.driven = &driven_;
       const frontier::Stopwatch watch;
       status = goals_.Update(in);

@@ -15,6 +15,7 @@
 #include "scout/exploration/ground_truth.h"
 #include "scout/exploration/map_progress.h"
 #include "scout/explore/goal_manager.h"
+#include "scout/explore/scan_memory.h"
 #include "scout/frontier/frontier_engine.h"
 #include "scout/grid/incremental_fusion.h"
 #include "scout/grid/occupancy_map.h"
@@ -185,6 +186,9 @@ class ExplorationLoop {
   void FeedSensorsUntimed();
   // Returns the robot's SLAM estimate (map frame) at the latest odometry.
   geometry::Rigid2d EstimatedPose() const;
+  // The robot's pose in local SLAM's frame (no jumps on optimisations): the
+  // newest matched pose moved on by odometry since its scan.
+  geometry::Rigid2d LocalPose() const;
   // Where points of the estimated map lie in the true world (see the .cc).
   std::vector<Eigen::Vector2d> MapPointsInWorld(
       const std::vector<Eigen::Vector2d>& points_map) const;
@@ -218,6 +222,8 @@ class ExplorationLoop {
   geometry::Rigid2d world_from_map_;
   // The latest scan's returns (robot frame), for the collision guard.
   std::vector<Eigen::Vector2d> latest_returns_;
+  // The recent scans' returns near the robot (local SLAM frame), for backing up.
+  explore::ScanMemory recent_returns_;
   // SLAM's node positions (global), refreshed with the fused map.
   std::vector<Eigen::Vector2d> driven_;
 

@@ -46,6 +46,7 @@ void Validate(const CollisionGuardOptions& o) {
   CheckAtLeast("guard", "horizon_s", o.horizon_s, 0.0);
   CheckAtLeast("guard", "steer_max_curvature_per_m", o.steer_max_curvature_per_m, 0.0);
   CheckAtLeast("guard", "steer_step_per_m", o.steer_step_per_m, 0.0, /*strict=*/true);
+  CheckAtLeast("guard", "memory_s", o.memory_s, 0.0);
 }
 
 GuardedCommand GuardCommand(const VelocityCommand& command,
@@ -90,6 +91,23 @@ GuardedCommand GuardCommand(const VelocityCommand& command,
     out.command.angular_radps = command.angular_radps * v_safe / v;  // the same arc
     out.limited = true;
   }
+  return out;
+}
+
+GuardedCommand GuardBackward(const VelocityCommand& command,
+                             const std::vector<Eigen::Vector2d>& obstacles, double robot_radius_m,
+                             const CollisionGuardOptions& options) {
+  if (command.linear_mps >= 0.0) return {command, false, false, false};
+  // Mirrored across the robot's y axis, backing along (v, w) is driving
+  // forward along (-v, -w): the forward check applies unchanged.
+  std::vector<Eigen::Vector2d> mirrored;
+  mirrored.reserve(obstacles.size());
+  for (const Eigen::Vector2d& p : obstacles) mirrored.emplace_back(-p.x(), p.y());
+  CollisionGuardOptions no_steering = options;
+  no_steering.steer_max_curvature_per_m = 0.0;
+  GuardedCommand out = GuardCommand({-command.linear_mps, -command.angular_radps}, mirrored,
+                                    robot_radius_m, no_steering);
+  out.command = {-out.command.linear_mps, -out.command.angular_radps};
   return out;
 }
 

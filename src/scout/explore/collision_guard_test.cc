@@ -113,6 +113,67 @@ TEST(CollisionGuardTest, LetsTheRobotPassBesideAWall) {
   EXPECT_FALSE(g.limited);
 }
 
+TEST(CollisionGuardTest, BackingUpStopsBeforeAWallBehindAndIgnoresWhatIsAhead) {
+  CollisionGuardOptions o;
+  const std::vector<Eigen::Vector2d> ahead = {{0.25, 0.0}, {0.3, 0.1}};
+  const GuardedCommand away = GuardBackward({-0.15, 0.2}, ahead, kRadius, o);
+  EXPECT_FALSE(away.limited);
+  EXPECT_DOUBLE_EQ(away.command.linear_mps, -0.15);
+  EXPECT_DOUBLE_EQ(away.command.angular_radps, 0.2);
+  // Forward and turning-only commands are GuardCommand's, not this one's.
+  EXPECT_FALSE(GuardBackward({0.5, 0.0}, ahead, kRadius, o).limited);
+  EXPECT_FALSE(GuardBackward({0.0, 1.0}, {{-0.21, 0.0}}, kRadius, o).limited);
+  // A post 0.4 m behind: 0.17 m of free travel, less than 0.25 m/s for 1 s.
+  const GuardedCommand slowed = GuardBackward({-0.25, 0.0}, {{-0.4, 0.0}}, kRadius, o);
+  EXPECT_TRUE(slowed.limited);
+  EXPECT_FALSE(slowed.stopped);
+  EXPECT_LT(slowed.command.linear_mps, 0.0);
+  EXPECT_GT(slowed.command.linear_mps, -0.25);
+  EXPECT_FALSE(slowed.steered);
+  // Touching it: stopped, still turning.
+  const GuardedCommand stopped = GuardBackward({-0.15, 0.3}, {{-0.235, 0.0}}, kRadius, o);
+  EXPECT_TRUE(stopped.stopped);
+  EXPECT_EQ(stopped.command.linear_mps, 0.0);
+  EXPECT_DOUBLE_EQ(stopped.command.angular_radps, 0.3);
+}
+
+// Backing along an arc: a post behind-left is hit when the rear swings left,
+// that is when the robot backs while turning clockwise (negative rate).
+TEST(CollisionGuardTest, BackingAlongAnArcChecksTheSideItSwingsTo) {
+  CollisionGuardOptions o;
+  const std::vector<Eigen::Vector2d> behind_left = {{-0.35, 0.3}};
+  EXPECT_TRUE(GuardBackward({-0.3, -1.0}, behind_left, kRadius, o).limited);
+  EXPECT_FALSE(GuardBackward({-0.3, 1.0}, behind_left, kRadius, o).limited);
+}
+
+RC_GTEST_PROP(CollisionGuardProperty, NeverBacksIntoAnObstacle, ()) {
+  const int n = *rc::gen::inRange(1, 20);
+  std::vector<Eigen::Vector2d> obstacles;
+  for (int i = 0; i < n; ++i) {
+    const double angle = *rc::gen::inRange(0, 629) * 0.01;  // all around
+    const double range = 0.25 + *rc::gen::inRange(0, 200) * 0.01;
+    obstacles.push_back(range * Eigen::Vector2d(std::cos(angle), std::sin(angle)));
+  }
+  const VelocityCommand command{-*rc::gen::inRange(1, 31) * 0.01,
+                                *rc::gen::inRange(-100, 101) * 0.01};
+  // Backed in small steps, re-guarded each step.
+  Eigen::Vector2d pos(0, 0);
+  double heading = 0.0;
+  double closest = 1e9;
+  const double dt = 0.01;
+  for (double t = 0; t < 3.0; t += dt) {
+    std::vector<Eigen::Vector2d> local;
+    const Eigen::Rotation2Dd to_robot(-heading);
+    for (const Eigen::Vector2d& p : obstacles) local.push_back(to_robot * (p - pos));
+    const GuardedCommand g = GuardBackward(command, local, kRadius, {});
+    RC_ASSERT(g.command.linear_mps <= 0.0);
+    heading += g.command.angular_radps * dt;
+    pos += g.command.linear_mps * dt * Eigen::Vector2d(std::cos(heading), std::sin(heading));
+    for (const Eigen::Vector2d& p : obstacles) closest = std::min(closest, (p - pos).norm());
+  }
+  RC_ASSERT(closest >= kRadius);
+}
+
 RC_GTEST_PROP(CollisionGuardProperty, NeverDrivesIntoAnObstacle, ()) {
   // Random obstacles outside the disc plus clearance; any forward command.
   const int n = *rc::gen::inRange(1, 20);

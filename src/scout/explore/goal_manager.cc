@@ -436,6 +436,14 @@ bool GoalManager::BlockedBehind(const geometry::Rigid2d& pose) const {
   return (behind_m < radius_m && behind_m < now_m - 0.5 * look_m) || OffTrail(pose);
 }
 
+bool GoalManager::GuardRear(const ExploreInput& in, VelocityCommand* command) const {
+  if (!in.recent_returns || options_.guard.memory_s <= 0.0) return false;
+  const GuardedCommand g =
+      GuardBackward(*command, in.recent_returns(), map_->options().robot_radius_m, options_.guard);
+  *command = g.command;
+  return g.stopped;
+}
+
 namespace {
 
 // Spacing of the trail's points and of the centres checked against it: finer
@@ -495,7 +503,8 @@ void GoalManager::Drive(const ExploreInput& in, ExploreStatus& status) {
   const Eigen::Vector2d here = in.robot_pose.translation();
   if (backing_up_since_) {
     const auto [since_s, from] = *backing_up_since_;
-    const bool blocked = BlockedBehind(in.robot_pose);
+    VelocityCommand back{-options_.back_up_speed_mps, 0.0};
+    const bool blocked = BlockedBehind(in.robot_pose) || GuardRear(in, &back);
     counters_.back_ups_blocked += blocked;
     if (blocked || (here - from).norm() >= options_.back_up_distance_m ||
         in.time_s - since_s >= options_.back_up_timeout_s) {
@@ -510,7 +519,7 @@ void GoalManager::Drive(const ExploreInput& in, ExploreStatus& status) {
       EndStuckGoal(in);
       return;
     }
-    status.command.linear_mps = -options_.back_up_speed_mps;
+    status.command = back;
     return;
   }
   RecordTrail(here);  // backing up adds nothing: back-ups in a row do not add up
@@ -562,7 +571,8 @@ void GoalManager::Drive(const ExploreInput& in, ExploreStatus& status) {
     ++counters_.recoveries;
     backing_up_since_ = {in.time_s, here};
     status.command = {};
-    if (!BlockedBehind(in.robot_pose)) status.command.linear_mps = -options_.back_up_speed_mps;
+    VelocityCommand back{-options_.back_up_speed_mps, 0.0};
+    if (!BlockedBehind(in.robot_pose) && !GuardRear(in, &back)) status.command = back;
   }
 }
 

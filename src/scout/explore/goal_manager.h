@@ -3,6 +3,7 @@
 
 #include <Eigen/Core>
 #include <deque>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string_view>
@@ -146,6 +147,10 @@ struct ExploreInput {
   // The latest scan's returns in the robot frame (metres), for the collision
   // guard; null: no guard.
   const std::vector<Eigen::Vector2d>* obstacles = nullptr;
+  // The returns of the recent scans (ScanMemory) in the robot frame, asked
+  // for only when backing up (CollisionGuardOptions::memory_s); empty: the
+  // map alone is checked behind the robot.
+  std::function<std::vector<Eigen::Vector2d>()> recent_returns;
   // True when the map or the frontier changed since the previous update.
   bool map_changed = false;
 };
@@ -279,6 +284,9 @@ class GoalManager {
   // and closer to it than any occupied cell is to the robot now.
   // Also true when the same segment leaves the recent trail (back_up_trail_m).
   bool BlockedBehind(const geometry::Rigid2d& pose) const;
+  // Limits the backward 'command' by the recent scans (GuardBackward); true
+  // when that stops it.
+  bool GuardRear(const ExploreInput& in, VelocityCommand* command) const;
   // True when a centre on the segment back_up_look_behind_m behind 'pose' is
   // farther than back_up_trail_tolerance_m from trail_; false without a trail.
   bool OffTrail(const geometry::Rigid2d& pose) const;

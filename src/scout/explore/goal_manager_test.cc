@@ -211,6 +211,50 @@ TEST(GoalManagerTest, BackingUpStopsAtAWallTheMapShowsBehind) {
   EXPECT_EQ(gm.counters().back_ups_blocked, 0);
 }
 
+// The lidar sees only ahead: a wall the recent scans saw behind the robot,
+// which its map does not have (misplaced), stops backing up before the disc
+// reaches it, unless the scan memory is off.
+TEST(GoalManagerTest, BackingUpStopsAtAWallTheRecentScansSawBehind) {
+  Room room;
+  // A wall across the robot's back, 0.25 m behind its centre: the disc keeps
+  // 0.05 m, so 0.15 m/s over the guard's 1 s horizon would reach it.
+  std::vector<Eigen::Vector2d> wall_behind;
+  for (double y = -0.4; y <= 0.4; y += 0.02) wall_behind.emplace_back(-0.25, y);
+  for (const double memory_s : {10.0, 0.0}) {
+    GoalManagerOptions o;  // stuck recovery on
+    o.guard.memory_s = memory_s;
+    GoalManager gm = MakeManager(o);
+    gm.Start();
+    const Eigen::Vector2d robot = room.b.At(10, 20);  // no mapped wall within 0.45 m
+    int asked = 0;
+    auto input = [&](double t, bool changed) {
+      ExploreInput in = room.Input(t, robot, changed);
+      in.recent_returns = [&] {
+        ++asked;
+        return wall_behind;
+      };
+      return in;
+    };
+    ExploreStatus s = gm.Update(input(0, true));
+    ASSERT_EQ(s.state, ExploreState::kDriving);
+    for (double t = 0.5; t < o.stuck_timeout_s; t += 0.5) s = gm.Update(input(t, false));
+    EXPECT_EQ(asked, 0) << "the memory is read only when backing up";
+    s = gm.Update(input(o.stuck_timeout_s, false));
+    ASSERT_EQ(gm.counters().recoveries, 1);
+    if (memory_s > 0.0) {
+      EXPECT_GT(asked, 0);
+      // Slowed to what stops the disc before the wall, never past it.
+      EXPECT_LE(s.command.linear_mps, 0.0);
+      EXPECT_GT(s.command.linear_mps, -0.05 - 1e-9);
+      s = gm.Update(input(o.stuck_timeout_s + 0.1, false));
+      EXPECT_GT(s.command.linear_mps, -0.05 - 1e-9);
+    } else {
+      EXPECT_EQ(asked, 0);
+      EXPECT_DOUBLE_EQ(s.command.linear_mps, -o.back_up_speed_mps) << "blind: full speed";
+    }
+  }
+}
+
 // Backing up may leave the path the robot drove by at most the trail
 // tolerance: the map behind it (which the lidar does not see) may be wrong.
 TEST(GoalManagerTest, BackingUpStaysNearThePathDriven) {

@@ -37,6 +37,7 @@ void ReadGoals(YamlSection s, explore::GoalManagerOptions* o) {
     g.ReadNonNegative("horizon_s", &o->guard.horizon_s);
     g.ReadNonNegative("steer_max_curvature_per_m", &o->guard.steer_max_curvature_per_m);
     g.ReadNonNegative("steer_step_per_m", &o->guard.steer_step_per_m);
+    g.ReadNonNegative("memory_s", &o->guard.memory_s);
     g.RejectUnknownKeys();
   }
   {
