@@ -84,7 +84,7 @@ TEST_F(ExploreCli, BadInputsNameWhatIsWrongAndLeaveNoOutputs) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find("--max-sim-time"), std::string::npos) << r.output;
   scout::WriteTextFileAtomically(dir_ / "contradictory.yaml",
-                                 "explore:\n  frontier_inflation_radius_m: 0.25\n");
+                                 "explore:\n  frontier_inflation_radius_m: 0.2\n");
   r = RunScout("explore --config " + (dir_ / "contradictory.yaml").string() + rooms + o);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find("contradictory"), std::string::npos) << r.output;

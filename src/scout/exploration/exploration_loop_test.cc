@@ -134,7 +134,7 @@ TEST(ExplorationLoopTest, ABoundaryKeepsTheRobotToItsAreaAndCoverageToIt) {
 
 TEST(ExplorationLoopTest, BadOptionsAndStartsAreInputErrors) {
   ExplorationOptions o;
-  o.explore.frontier_inflation_radius_m = 0.25;  // below the planner's 0.30 in narrow passages
+  o.explore.frontier_inflation_radius_m = 0.2;  // below the planner's 0.25 in narrow passages
   EXPECT_THROW(Explore(o, 1), InputError);
   o = {};
   o.explore.strategy = "magic";

@@ -95,13 +95,15 @@ struct ExploreOptions {
   // (seed 1) ended "complete" at coverage 0.70-0.74 with the rooms behind
   // such doors seen only through them (its true map has 1033 m² reachable
   // with 0.40 m of clearance, 687 m² with 0.45 m). Robot radius +
-  // traversability.narrow_margin_m (0.30 m) is the clearance the planner's
+  // traversability.narrow_margin_m (0.25 m) is the clearance the planner's
   // narrow passages keep, and traversability.driven_width_m lets the robot
   // leave every room it entered. Measured on seed 1 (office / willow-garage):
   // 0.40 -> coverage 0.993 / 0.701, 0.35 -> 0.992 / 0.748, 0.30 -> 1.000 /
   // 0.950. (Without the driven cells, 0.30 stranded the robot in a willow
-  // room: 0.50.) It must be at least robot radius + narrow margin.
-  double frontier_inflation_radius_m = 0.30;
+  // room: 0.50.) With the narrow margin at 0.05 m, 0.25 (2026-12-02, seeds
+  // 1-5): willow-garage 0.973-0.981. It must be at least robot radius +
+  // narrow margin.
+  double frontier_inflation_radius_m = 0.25;
   // Optional exploration area: a polygon of at least three vertices in the
   // world frame (metres), which must contain the start. Frontier points
   // outside it are never goals (the loop hands it to the goal manager in the

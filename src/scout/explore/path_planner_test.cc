@@ -115,11 +115,11 @@ TEST(PathPlannerTest, UnknownCellsAreTraversableOnlyWhenConfigured) {
 }
 
 TEST(PathPlannerTest, WhereTheRobotDroveStaysPassable) {
-  // Two rooms joined by a door 0.5 m wide in the map: below the 0.60 m a
-  // 0.20 m robot with a 0.10 m narrow margin needs, so no plan crosses it,
+  // Two rooms joined by a door 0.4 m wide in the map: below the 0.50 m a
+  // 0.20 m robot with a 0.05 m narrow margin needs, so no plan crosses it,
   // unless the robot's own trajectory came through it.
   MapBuilder b(60, 30, 0.1, grid::CellState::kFree);
-  b.Wall(30, 0, 30, 12).Wall(30, 18, 30, 29);  // door: cells 13-17
+  b.Wall(30, 0, 30, 12).Wall(30, 17, 30, 29);  // door: cells 13-16
   const Eigen::Vector2d left = b.At(10, 15), right = b.At(50, 15);
   PlanningMap sealed(b.map(), TraversabilityOptions{});
   EXPECT_FALSE(PathPlanner({}).Plan(sealed, left, right));

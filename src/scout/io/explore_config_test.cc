@@ -48,6 +48,9 @@ TEST_F(ExploreConfigTest, DefaultFileMatchesTheBuiltInDefaults) {
                    d.explore.traversability.driven_max_gap_m);
   EXPECT_DOUBLE_EQ(c.explore.goals.guard.clearance_m, d.explore.goals.guard.clearance_m);
   EXPECT_DOUBLE_EQ(c.explore.goals.guard.horizon_s, d.explore.goals.guard.horizon_s);
+  EXPECT_DOUBLE_EQ(c.explore.goals.guard.memory_s, d.explore.goals.guard.memory_s);
+  EXPECT_DOUBLE_EQ(c.explore.traversability.narrow_margin_m,
+                   d.explore.traversability.narrow_margin_m);
   EXPECT_EQ(c.explore.goals.return_to_start, d.explore.goals.return_to_start);
   EXPECT_EQ(c.explore.goals.failed_goals.max_failures, d.explore.goals.failed_goals.max_failures);
   EXPECT_DOUBLE_EQ(c.explore.traversability.safety_margin_m,
