@@ -41,9 +41,15 @@ explore::GoalManagerOptions GoalOptionsInMapFrame(const ExplorationOptions& opti
   return goals;
 }
 
-// Returns farther than this from the robot cannot be reached while backing
-// up within the guard's horizon (0.15 m/s for 1 s, plus the disc).
-constexpr double kRecentReturnsRadiusM = 1.0;
+// How far from the robot the scan memory keeps returns: at least 1 m, so a
+// wall seen on the way in is kept from a little way off, and at least what
+// backing up can reach within the guard's horizon plus the disc and its
+// clearance (0.38 m by default: 0.15 m/s for 1 s, 0.23 m).
+double RecentReturnsRadiusM(const ExplorationOptions& o) {
+  const explore::GoalManagerOptions& g = o.explore.goals;
+  return std::max(1.0, g.back_up_speed_mps * g.guard.horizon_s + o.robot.robot.radius_m +
+                           g.guard.clearance_m + 0.1);
+}
 
 std::vector<std::string> EngineStrategies(const ExploreOptions& e) { return {e.strategy}; }
 
@@ -74,7 +80,7 @@ ExplorationLoop::ExplorationLoop(const sim::World& world, const ExplorationOptio
              options_.explore.planner, options_.explore.follower,
              explore::MakeGoalPolicy(options_.explore.goal_policy, options_.explore.policy)),
       world_from_map_(robot_.true_pose()),
-      recent_returns_(options_.explore.goals.guard.memory_s, kRecentReturnsRadiusM),
+      recent_returns_(options_.explore.goals.guard.memory_s, RecentReturnsRadiusM(options_)),
       fusion_(options_.slam.local.submaps.resolution_m),
       map_progress_(options_.explore.min_map_gain_m2) {
   // Local SLAM's frame starts at the first scan's pose, which is the start.
