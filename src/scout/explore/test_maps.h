@@ -64,6 +64,7 @@ inline TraversabilityOptions SmallRobot() {
   TraversabilityOptions o;
   o.robot_radius_m = 0.1;
   o.safety_margin_m = 0.1;
+  o.narrow_margin_m = o.safety_margin_m;  // no narrow-passage tier (as before its 0.05 m default)
   return o;
 }
 
