@@ -11,10 +11,11 @@ namespace {
 
 constexpr double kRadius = 0.2;
 
-// Drives the guarded command in small steps (re-guarding each step, obstacles
-// moved into the new robot frame) and returns the closest approach.
-double ClosestApproach(const VelocityCommand& command, std::vector<Eigen::Vector2d> obstacles,
-                       const CollisionGuardOptions& options, double duration_s) {
+// Drives the command in small steps, each guarded by 'guard' (obstacles
+// moved into the new robot frame), and returns the closest approach.
+template <typename Guard>
+double ClosestApproachGuardedBy(const Guard& guard, const VelocityCommand& command,
+                                const std::vector<Eigen::Vector2d>& obstacles, double duration_s) {
   Eigen::Vector2d pos(0, 0);
   double heading = 0.0;
   double closest = 1e9;
@@ -23,12 +24,23 @@ double ClosestApproach(const VelocityCommand& command, std::vector<Eigen::Vector
     std::vector<Eigen::Vector2d> local;
     const Eigen::Rotation2Dd to_robot(-heading);
     for (const Eigen::Vector2d& p : obstacles) local.push_back(to_robot * (p - pos));
-    const GuardedCommand g = GuardCommand(command, local, kRadius, options);
+    const GuardedCommand g = guard(command, local);
     heading += g.command.angular_radps * dt;
     pos += g.command.linear_mps * dt * Eigen::Vector2d(std::cos(heading), std::sin(heading));
     for (const Eigen::Vector2d& p : obstacles) closest = std::min(closest, (p - pos).norm());
   }
   return closest;
+}
+
+// The same for the forward guard with 'options'.
+double ClosestApproach(const VelocityCommand& command,
+                       const std::vector<Eigen::Vector2d>& obstacles,
+                       const CollisionGuardOptions& options, double duration_s) {
+  return ClosestApproachGuardedBy(
+      [&](const VelocityCommand& c, const std::vector<Eigen::Vector2d>& local) {
+        return GuardCommand(c, local, kRadius, options);
+      },
+      command, obstacles, duration_s);
 }
 
 TEST(CollisionGuardTest, FreeWayAndBackwardAndTurningCommandsPassUnchanged) {
@@ -156,21 +168,13 @@ RC_GTEST_PROP(CollisionGuardProperty, NeverBacksIntoAnObstacle, ()) {
   }
   const VelocityCommand command{-*rc::gen::inRange(1, 31) * 0.01,
                                 *rc::gen::inRange(-100, 101) * 0.01};
-  // Backed in small steps, re-guarded each step.
-  Eigen::Vector2d pos(0, 0);
-  double heading = 0.0;
-  double closest = 1e9;
-  const double dt = 0.01;
-  for (double t = 0; t < 3.0; t += dt) {
-    std::vector<Eigen::Vector2d> local;
-    const Eigen::Rotation2Dd to_robot(-heading);
-    for (const Eigen::Vector2d& p : obstacles) local.push_back(to_robot * (p - pos));
-    const GuardedCommand g = GuardBackward(command, local, kRadius, {});
-    RC_ASSERT(g.command.linear_mps <= 0.0);
-    heading += g.command.angular_radps * dt;
-    pos += g.command.linear_mps * dt * Eigen::Vector2d(std::cos(heading), std::sin(heading));
-    for (const Eigen::Vector2d& p : obstacles) closest = std::min(closest, (p - pos).norm());
-  }
+  const double closest = ClosestApproachGuardedBy(
+      [](const VelocityCommand& c, const std::vector<Eigen::Vector2d>& local) {
+        const GuardedCommand g = GuardBackward(c, local, kRadius, {});
+        RC_ASSERT(g.command.linear_mps <= 0.0);
+        return g;
+      },
+      command, obstacles, 3.0);
   RC_ASSERT(closest >= kRadius);
 }
 
