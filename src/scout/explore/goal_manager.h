@@ -102,8 +102,10 @@ struct GoalManagerOptions {
   // coverage 0.44 and 0.71. 0: off.
   double close_stuck_passage_radius_m = 0.5;
   // The robot is sent to the last point of the path, at most this far (path
-  // metres) before a goal, where its disc covers known-free cells only: a
-  // frontier point may lie on the edge of unseen furniture (see
+  // metres) before a goal, where its disc covers known-free cells only and,
+  // where there is such a point, outside narrow passages: a frontier point
+  // may lie on the edge of unseen furniture, and a wall mapped a little off
+  // leaves no room at a stop that keeps only the narrow margin (see
   // CutAtStandOff). 0 drives to the goal itself.
   double max_stand_off_m = 0.5;
   // Forward commands are checked against the latest scan (ExploreInput::

@@ -1,6 +1,7 @@
 #include "scout/explore/stand_off.h"
 
 #include <cmath>
+#include <optional>
 
 #include "scout/explore/path_planner.h"
 
@@ -26,10 +27,16 @@ bool DiscInKnownFree(const PlanningMap& map, const Eigen::Vector2d& p) {
   return true;
 }
 
-std::vector<Eigen::Vector2d> CutAtStandOff(const PlanningMap& map,
-                                           const std::vector<Eigen::Vector2d>& path,
-                                           double max_back_off_m, double min_length_m) {
-  if (path.size() < 2 || max_back_off_m <= 0.0 || DiscInKnownFree(map, path.back())) return path;
+namespace {
+
+// The path cut at its last point, at most max_back_off_m of path before the
+// goal and leaving at least min_length_m of it, where 'qualifies' holds;
+// nothing when no such point exists.
+template <typename Qualifies>
+std::optional<std::vector<Eigen::Vector2d>> CutAtLast(const PlanningMap& map,
+                                                      const std::vector<Eigen::Vector2d>& path,
+                                                      double max_back_off_m, double min_length_m,
+                                                      Qualifies&& qualifies) {
   const double length_m = PolylineLength(path);  // min_length_m of it is kept
   const double step = 0.5 * map.limits().resolution();
   double back = 0.0;  // path walked back from the goal
@@ -39,16 +46,37 @@ std::vector<Eigen::Vector2d> CutAtStandOff(const PlanningMap& map,
     // Points on segment a-b at path distance 'back' .. 'back + len' from the goal.
     for (double s = step; s <= len + 1e-9; s += step) {
       const double from_goal = back + s;
-      if (from_goal > max_back_off_m) return path;
-      if (length_m - from_goal < min_length_m) return path;
+      if (from_goal > max_back_off_m || length_m - from_goal < min_length_m) return std::nullopt;
       const Eigen::Vector2d p = b + (a - b) * (s / len);
-      if (!DiscInKnownFree(map, p)) continue;
+      if (!qualifies(p)) continue;
       std::vector<Eigen::Vector2d> cut(path.begin(), path.begin() + i);
       if ((cut.back() - p).squaredNorm() > 1e-18) cut.push_back(p);
       return cut;
     }
     back += len;
   }
+  return std::nullopt;
+}
+
+}  // namespace
+
+bool KeepsFullMargin(const PlanningMap& map, const Eigen::Vector2d& p) {
+  const grid::CellIndex cell = map.limits().CellContaining(p);
+  return map.Traversable(cell) && !map.narrow(map.limits().FlatIndex(cell));
+}
+
+std::vector<Eigen::Vector2d> CutAtStandOff(const PlanningMap& map,
+                                           const std::vector<Eigen::Vector2d>& path,
+                                           double max_back_off_m, double min_length_m) {
+  if (path.size() < 2 || max_back_off_m <= 0.0) return path;
+  const auto full = [&map](const Eigen::Vector2d& p) {
+    return KeepsFullMargin(map, p) && DiscInKnownFree(map, p);
+  };
+  if (full(path.back())) return path;
+  if (auto cut = CutAtLast(map, path, max_back_off_m, min_length_m, full)) return *cut;
+  if (DiscInKnownFree(map, path.back())) return path;
+  const auto known = [&map](const Eigen::Vector2d& p) { return DiscInKnownFree(map, p); };
+  if (auto cut = CutAtLast(map, path, max_back_off_m, min_length_m, known)) return *cut;
   return path;
 }
 

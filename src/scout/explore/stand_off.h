@@ -14,17 +14,28 @@ namespace scout::explore {
 // may hide a wall: a frontier that a grazing ray cut along the unseen side of
 // a desk lies on the desk's edge, where no robot can stand. (Office seeds 1-5:
 // 1-2 issued navigation points per run lie where the robot's disc cannot get
-// within the goal tolerance; their stand-off targets: none.) The robot is
-// therefore sent to the last point of the path from
-// which its disc (radius robot_radius_m) covers known-free cells only, at
-// most 'max_back_off_m' of path before the goal; it sees the frontier from
-// there. Returns the path cut at that point; the path itself when its end
-// already qualifies, when no point within max_back_off_m does (the robot
-// then drives to the goal as before), or when the cut would leave less than
+// within the goal tolerance; their stand-off targets: none.) Nor should the
+// robot stop in a narrow passage's band (TraversabilityOptions::
+// narrow_margin_m), which is there to pass through: the map can place a wall
+// 0.1-0.2 m off, and a stop with only the narrow margin then lies where the
+// true wall leaves the disc no room (museum seed 1 at 5505 s: a target 0.25 m
+// from an exhibit block's mapped corner).
+//
+// The robot is therefore sent to the last point of the path, at most
+// 'max_back_off_m' of path before the goal, that keeps the full safety margin
+// and from which its disc (radius robot_radius_m) covers known-free cells
+// only; it sees the frontier from there. Without such a point, the last
+// point whose disc covers known-free cells only (a goal in a narrow room
+// keeps its stop there). Returns the path itself when its end already
+// qualifies, when no point within max_back_off_m does (the robot then drives
+// to the goal as before), or when the cut would leave less than
 // 'min_length_m' of path (the robot would stop where it stands).
 std::vector<Eigen::Vector2d> CutAtStandOff(const PlanningMap& map,
                                            const std::vector<Eigen::Vector2d>& path,
                                            double max_back_off_m, double min_length_m);
+
+// True when the cell under 'p' is traversable outside the narrow-passage band.
+bool KeepsFullMargin(const PlanningMap& map, const Eigen::Vector2d& p);
 
 // True when every cell the robot's disc at 'p' overlaps is known free.
 bool DiscInKnownFree(const PlanningMap& map, const Eigen::Vector2d& p);

@@ -64,6 +64,58 @@ TEST(StandOffTest, WalksBackAcrossPathCorners) {
   EXPECT_EQ(cut.size(), 2u);
 }
 
+// The tiers of the defaults at hand-drawn scale: a 0.1 m disc, 0.2 m of
+// safety margin, 0.05 m in narrow passages.
+TraversabilityOptions RobotWithNarrowTier() {
+  TraversabilityOptions o = testing::SmallRobot();
+  o.safety_margin_m = 0.2;
+  o.narrow_margin_m = 0.05;
+  return o;
+}
+
+TEST(StandOffTest, StopsWhereTheFullSafetyMarginIsKept) {
+  // A wall block (cells x 27-29 at y = 12) 0.2 m beside the path's last
+  // 0.3 m: the goal lies in the narrow band, where a wall the map has
+  // 0.1 m off leaves the disc no room. The stop lies in the last cell of the
+  // path whose centre keeps 0.3 m from the block's: cell 24 (centre x 2.45,
+  // 0.36 m from cell (27, 12)); cell 25 (2.55, 0.28 m) is in the band.
+  MapBuilder b = RoomWithUnknownEnd();
+  b.Wall(27, 12, 29, 12);
+  const PlanningMap map(b.map(), RobotWithNarrowTier());
+  const Eigen::Vector2d goal = b.At(29, 10);
+  ASSERT_TRUE(map.narrow(map.limits().FlatIndex({29, 10})));
+  EXPECT_FALSE(KeepsFullMargin(map, goal));
+  const std::vector<Eigen::Vector2d> path = {b.At(5, 10), goal};
+  const std::vector<Eigen::Vector2d> cut = CutAtStandOff(map, path, 0.5, 0.25);
+  ASSERT_EQ(cut.size(), 2u);
+  EXPECT_TRUE(KeepsFullMargin(map, cut.back()));
+  EXPECT_TRUE(DiscInKnownFree(map, cut.back()));
+  EXPECT_NEAR(cut.back().y(), goal.y(), 1e-9);
+  EXPECT_LT(cut.back().x(), 2.5);
+  EXPECT_GE(cut.back().x(), 2.4);
+  // A goal in known free space but in the band is cut as well.
+  const std::vector<Eigen::Vector2d> inside = {b.At(5, 10), b.At(28, 10)};
+  EXPECT_LT(CutAtStandOff(map, inside, 0.5, 0.25).back().x(), 2.5);
+}
+
+TEST(StandOffTest, InANarrowPassageStopsInKnownFreeSpaceAsBefore) {
+  // The wall runs along the whole path: no point within the back-off keeps
+  // the full margin, so the stop is the last one whose disc is known free,
+  // and a path ending in known free space is kept.
+  MapBuilder b = RoomWithUnknownEnd();
+  b.Wall(0, 12, 29, 12);
+  const PlanningMap map(b.map(), RobotWithNarrowTier());
+  const Eigen::Vector2d goal = b.At(29, 10);
+  const std::vector<Eigen::Vector2d> path = {b.At(5, 10), goal};
+  const std::vector<Eigen::Vector2d> cut = CutAtStandOff(map, path, 0.5, 0.25);
+  ASSERT_EQ(cut.size(), 2u);
+  EXPECT_FALSE(KeepsFullMargin(map, cut.back()));
+  EXPECT_TRUE(DiscInKnownFree(map, cut.back()));
+  EXPECT_NEAR(cut.back().x(), 3.0 - 0.1, 0.051);
+  const std::vector<Eigen::Vector2d> inside = {b.At(5, 10), b.At(20, 10)};
+  EXPECT_EQ(CutAtStandOff(map, inside, 0.5, 0.25), inside);
+}
+
 RC_GTEST_PROP(StandOffProperty, TheStopIsOnThePathWithinTheBackOff, ()) {
   // Random known-free rectangle in an unknown map; a straight path from its
   // middle to a random free cell.
