@@ -41,7 +41,8 @@ struct TraversabilityOptions {
   // robot (0.40 m across) needed a 0.60 m gap in its map, and willow-garage's
   // doors (0.65 m between the grey edges the simulator treats as solid, less
   // in the SLAM map) kept it out of rooms: coverage 0.956 and 0.967 on seeds
-  // 2 and 4; at 0.05 m 0.975 and 0.976 (every seed >= 0.97). The collision
+  // 2 and 4; at 0.05 m 0.975 and 0.976 (build of 441f1b8: every seed >= 0.97;
+  // with the stand-off of 2070b2d seed 2 fell to 0.966, its SLAM worse). The collision
   // guard and its scan memory keep the disc off the walls it then passes
   // close to (office seeds 1-5: no collision).
   double narrow_margin_m = 0.05;
