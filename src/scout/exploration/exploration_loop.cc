@@ -43,12 +43,16 @@ explore::GoalManagerOptions GoalOptionsInMapFrame(const ExplorationOptions& opti
 
 // How far from the robot the scan memory keeps returns: at least 1 m, so a
 // wall seen on the way in is kept from a little way off, and at least what
-// backing up can reach within the guard's horizon plus the disc and its
-// clearance (0.38 m by default: 0.15 m/s for 1 s, 0.23 m).
+// backing up can reach within the guard's horizon plus the disc, its
+// clearance and a spare (0.48 m by default: 0.15 m/s for 1 s, 0.2 + 0.03 m,
+// 0.1 m), so a faster back-up speed widens it.
+constexpr double kMinRecentReturnsRadiusM = 1.0;
+constexpr double kRecentReturnsSpareM = 0.1;
 double RecentReturnsRadiusM(const ExplorationOptions& o) {
   const explore::GoalManagerOptions& g = o.explore.goals;
-  return std::max(1.0, g.back_up_speed_mps * g.guard.horizon_s + o.robot.robot.radius_m +
-                           g.guard.clearance_m + 0.1);
+  return std::max(kMinRecentReturnsRadiusM, g.back_up_speed_mps * g.guard.horizon_s +
+                                                o.robot.robot.radius_m + g.guard.clearance_m +
+                                                kRecentReturnsSpareM);
 }
 
 std::vector<std::string> EngineStrategies(const ExploreOptions& e) { return {e.strategy}; }
