@@ -95,6 +95,9 @@ void ReadPoseGraph(YamlSection s, slam::PoseGraphOptions* o) {
     c.ReadPositive("min_score", &b.min_score);
     c.ReadNonNegative("min_score_fraction_of_own_scans", &b.min_score_fraction_of_own_scans);
     c.ReadNonNegative("min_overlap", &b.min_overlap);
+    c.ReadNonNegative("wide_ambiguity_min_innovation_m", &b.wide_ambiguity_min_innovation_m);
+    c.ReadPositive("wide_ambiguity_window_factor", &b.wide_ambiguity_window_factor);
+    c.ReadPositive("wide_ambiguity_max_window_m", &b.wide_ambiguity_max_window_m);
     c.ReadNonNegative("min_search_window_m", &b.min_search_window_m);
     c.ReadNonNegative("search_window_per_travel", &b.search_window_per_travel);
     c.ReadNonNegative("min_angular_search_window_deg", &b.min_angular_search_window_deg);

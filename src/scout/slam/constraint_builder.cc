@@ -129,6 +129,15 @@ void Validate(const ConstraintBuilderOptions& options) {
     throw std::invalid_argument("constraint_builder option 'min_num_points': expected >= 1, got " +
                                 std::to_string(options.min_num_points));
   }
+  if (!(options.wide_ambiguity_min_innovation_m >= 0.0 &&
+        std::isfinite(options.wide_ambiguity_min_innovation_m))) {
+    throw std::invalid_argument(
+        "constraint_builder option 'wide_ambiguity_min_innovation_m': expected a finite value "
+        ">= 0, got " +
+        std::to_string(options.wide_ambiguity_min_innovation_m));
+  }
+  RequirePositive("wide_ambiguity_window_factor", options.wide_ambiguity_window_factor);
+  RequirePositive("wide_ambiguity_max_window_m", options.wide_ambiguity_max_window_m);
   RequirePositive("loop_closure_translation_weight", options.loop_closure_translation_weight);
   RequirePositive("loop_closure_rotation_weight", options.loop_closure_rotation_weight);
   Validate(options.fast_correlative_scan_matcher);
@@ -244,6 +253,23 @@ std::optional<Constraint> ConstraintBuilder::Search(int submap_id, int node_id,
       it->second.matcher->Match(initial_relative_pose, points, it->second.min_score,
                                 SearchWindow(travel_m), AngularSearchWindow(travel_m));
   if (!match) return std::nullopt;
+  // A match far from the estimate may be a copy of the place (the hall next
+  // door): search again around the match, far enough to reach back past the
+  // estimate, and keep the match only if it is still the one best answer.
+  const double innovation_m =
+      (match->pose.translation() - initial_relative_pose.translation()).norm();
+  if (options_.wide_ambiguity_min_innovation_m > 0.0 &&
+      innovation_m > options_.wide_ambiguity_min_innovation_m) {
+    const double window_m = std::min(options_.wide_ambiguity_max_window_m,
+                                     options_.wide_ambiguity_window_factor * innovation_m);
+    const std::optional<ScanMatchResult> wide = it->second.matcher->Match(
+        match->pose, points, it->second.min_score, window_m, AngularSearchWindow(travel_m));
+    if (!wide || (wide->pose.translation() - match->pose.translation()).norm() >
+                     it->second.matcher->options().ambiguity_radius_m) {
+      ++num_wide_ambiguous_;
+      return std::nullopt;
+    }
+  }
   // Branch and bound is only cell- and step-accurate; refine on the grid
   // itself, anchored at the branch-and-bound answer.
   const geometry::Rigid2d refined =

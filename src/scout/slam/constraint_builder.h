@@ -87,6 +87,21 @@ struct ConstraintBuilderOptions {
   // searched: 3 points match anywhere with a high score (seen in the office
   // when the lidar faces open space beyond its range).
   int min_num_points = 50;
+  // Wide ambiguity test: a match more than wide_ambiguity_min_innovation_m
+  // from the estimate is searched again, centred on itself, in a window of
+  // wide_ambiguity_window_factor times that distance (at most
+  // wide_ambiguity_max_window_m), and rejected unless it is again the one
+  // unambiguous best. The ambiguity test above only sees rivals inside the
+  // search window; when drift has put the estimate metres off, the window can
+  // hold a copy of the place (the hall next door) but not the place itself.
+  // A window three times the distance reaches back past the estimate by twice
+  // it. Simulated museum, seed 1, to 5300 s: closures 12 m off had bent the
+  // map to ATE 4.04 m (coverage 0.84); with the test 0.23 m (0.92), and 0.33 m
+  // with a factor of 2. Office seeds 2-5, the fr079 bag and the Radish logs
+  // are unchanged; office seed 1 0.059 -> 0.067 m. 0 = off.
+  double wide_ambiguity_min_innovation_m = 2.0;
+  double wide_ambiguity_window_factor = 3.0;
+  double wide_ambiguity_max_window_m = 14.0;
   // Weights of accepted loop closures in the pose adjustment.
   double loop_closure_translation_weight = 1.1e4;
   double loop_closure_rotation_weight = 1e5;
@@ -171,12 +186,14 @@ class ConstraintBuilder {
   // The angular window (radians) searched for a node 'travel_m' away.
   double AngularSearchWindow(double travel_m) const;
 
-  // Pairs searched, loop closures found, pairs skipped for lack of overlap
-  // and matches rejected by the free-space check, so far.
+  // Pairs searched, loop closures found, pairs skipped for lack of overlap,
+  // matches rejected by the free-space check and by the wide ambiguity test,
+  // so far.
   int num_searches() const { return num_searches_; }
   int num_constraints_found() const { return num_found_; }
   int num_without_overlap() const { return num_without_overlap_; }
   int num_seeing_through() const { return num_seeing_through_; }
+  int num_wide_ambiguous() const { return num_wide_ambiguous_; }
 
  private:
   struct SubmapMatcher {
@@ -194,6 +211,7 @@ class ConstraintBuilder {
   std::atomic<int> num_found_ = 0;
   int num_without_overlap_ = 0;
   std::atomic<int> num_seeing_through_ = 0;
+  std::atomic<int> num_wide_ambiguous_ = 0;
 };
 
 // The branch-and-bound score of 'points' (scan frame) placed by 'pose' (scan

@@ -236,6 +236,78 @@ TEST(ConstraintBuilderTest, ThinSubmapsAcceptMatchesRelativeToTheirOwnScans) {
   EXPECT_LT((found->relative_pose.translation() - truth.translation()).norm(), 0.05);
 }
 
+// A 6 m wide hall, 80 m long, whose pillars and wall boxes repeat every 8 m:
+// within the lidar's 8 m every place looks like the places 8 m, 16 m, ...
+// along it (the museum world's halls of equal exhibits).
+std::vector<Wall> RepeatingHall() {
+  std::vector<Wall> walls;
+  global_testing::AddRectangle({-40.0, -3.0}, {40.0, 3.0}, &walls);
+  for (int k = -5; k <= 4; ++k) {
+    const double x = 8.0 * k;
+    global_testing::AddRectangle({x - 0.2, -1.7}, {x + 0.3, -1.3}, &walls);  // pillars
+    global_testing::AddRectangle({x - 0.2, 1.0}, {x + 0.3, 1.4}, &walls);
+    global_testing::AddRectangle({x + 1.0, -3.0}, {x + 2.1, -2.6}, &walls);  // wall boxes
+    global_testing::AddRectangle({x + 3.0, 2.5}, {x + 3.6, 3.0}, &walls);
+    global_testing::AddRectangle({x + 5.2, -3.0}, {x + 6.6, -2.7}, &walls);
+    global_testing::AddRectangle({x + 6.1, 2.4}, {x + 6.6, 3.0}, &walls);
+  }
+  return walls;
+}
+
+// The robot stands at x = 0; drift put it at x = 5.2. The search window
+// (1 m + 2 % of 125 m = 3.5 m) reaches the copy of its place at x = 8 but not
+// x = 0, so the match lands 8 m off. Searching again around that match, three
+// times its distance from the estimate (8.4 m), finds x = 0 and x = 16 as good:
+// ambiguous, rejected.
+TEST(ConstraintBuilderTest, AMatchFarFromTheEstimateMustStayUniqueInAWiderWindow) {
+  const std::vector<Wall> walls = RepeatingHall();
+  std::vector<Rigid2d> poses;
+  for (int i = 0; i <= 40; ++i) poses.emplace_back(-10.0 + 0.5 * i, 0.1 * std::sin(i), 0.0);
+  const auto grid =
+      std::make_shared<const grid::ProbabilityGrid>(global_testing::BuildGrid(walls, {}, poses));
+  const PointCloud scan = global_testing::ScanReturns(walls, Rigid2d(0.0, 0.0, 0.0));
+  const Rigid2d estimate(5.2, 0.15, 0.02);
+  ConstraintBuilderOptions options;
+  options.min_overlap = 0.0;
+  options.wide_ambiguity_min_innovation_m = 0.0;  // off
+  ConstraintBuilder narrow(options);
+  narrow.AddFinishedSubmap(0, grid);
+  const std::optional<Constraint> alias = narrow.Search(0, 1, estimate, scan, 125.0);
+  ASSERT_TRUE(alias.has_value());  // without the wide test: the copy, 8 m off
+  EXPECT_NEAR(alias->relative_pose.x(), 8.0, 0.1);
+
+  options.wide_ambiguity_min_innovation_m = 2.0;  // the defaults
+  options.wide_ambiguity_window_factor = 3.0;
+  ConstraintBuilder wide(options);
+  wide.AddFinishedSubmap(0, grid);
+  EXPECT_FALSE(wide.Search(0, 1, estimate, scan, 125.0).has_value());
+  EXPECT_EQ(wide.num_wide_ambiguous(), 1);
+  // A window of twice the distance (5.6 m) does not reach back to x = 0.
+  options.wide_ambiguity_window_factor = 2.0;
+  ConstraintBuilder twice(options);
+  twice.AddFinishedSubmap(0, grid);
+  EXPECT_TRUE(twice.Search(0, 1, estimate, scan, 125.0).has_value());
+}
+
+// Where the place has no copy, a match far from the estimate survives the
+// wide test and is the true pose.
+TEST(ConstraintBuilderTest, AUniqueMatchFarFromTheEstimatePassesTheWideTest) {
+  const SubmapScene scene;
+  ConstraintBuilderOptions options;
+  options.wide_ambiguity_min_innovation_m = 2.0;
+  options.wide_ambiguity_window_factor = 3.0;
+  ConstraintBuilder builder(options);
+  builder.AddFinishedSubmap(0, scene.grid);
+  const Rigid2d node_world(-4.0, -4.4, 0.1);
+  const Rigid2d truth = scene.submap_frame.inverse() * node_world;
+  const Rigid2d estimate = truth * Rigid2d(2.4, 0.5, 0.05);  // 2.45 m off
+  const std::optional<Constraint> c = builder.Search(
+      0, 5, estimate, global_testing::ScanReturns(scene.walls, node_world), /*travel_m=*/100.0);
+  ASSERT_TRUE(c.has_value());
+  EXPECT_LT((c->relative_pose.translation() - truth.translation()).norm(), 0.05);
+  EXPECT_EQ(builder.num_wide_ambiguous(), 0);
+}
+
 TEST(ConstraintBuilderTest, FixedRatioSamplerIsDeterministic) {
   FixedRatioSampler a(0.3), b(0.3);
   for (int i = 0; i < 50; ++i) EXPECT_EQ(a.Pulse(), b.Pulse());
@@ -255,6 +327,12 @@ TEST(ConstraintBuilderTest, RejectsBadOptionsAndUnknownSubmaps) {
   EXPECT_THROW(ConstraintBuilder{options}, std::invalid_argument);
   options = {};
   options.fast_correlative_scan_matcher.branch_and_bound_depth = 0;
+  EXPECT_THROW(ConstraintBuilder{options}, std::invalid_argument);
+  options = {};
+  options.wide_ambiguity_min_innovation_m = std::nan("");
+  EXPECT_THROW(ConstraintBuilder{options}, std::invalid_argument);
+  options = {};
+  options.wide_ambiguity_window_factor = 0.0;
   EXPECT_THROW(ConstraintBuilder{options}, std::invalid_argument);
   ConstraintBuilder builder({});
   EXPECT_THROW(builder.Search(4, 0, Rigid2d(), {Eigen::Vector2d(1.0, 0.0)}, 0.0),
