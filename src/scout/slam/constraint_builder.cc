@@ -23,6 +23,13 @@ void RequirePositive(const char* key, double value) {
 // 0.5 of a cell seen equally often hit and passed.
 constexpr float kWallProbability = 0.6f;
 
+void RequireNonNegative(const char* key, double value) {
+  if (!(std::isfinite(value) && value >= 0.0)) {
+    throw std::invalid_argument(std::string("constraint_builder option '") + key +
+                                "': expected a finite value >= 0, got " + std::to_string(value));
+  }
+}
+
 void RequireFraction(const char* key, double value) {
   if (!(value >= 0.0 && value <= 1.0)) {
     throw std::invalid_argument(std::string("constraint_builder option '") + key +
@@ -95,23 +102,9 @@ void Validate(const ConstraintBuilderOptions& options) {
   RequireFraction("min_score_fraction_of_own_scans", options.min_score_fraction_of_own_scans);
   RequireFraction("min_overlap", options.min_overlap);
   RequireFraction("max_see_through", options.max_see_through);
-  if (!(options.see_through_slack_m >= 0.0 && std::isfinite(options.see_through_slack_m))) {
-    throw std::invalid_argument(
-        "constraint_builder option 'see_through_slack_m': expected a finite value >= 0, got " +
-        std::to_string(options.see_through_slack_m));
-  }
-  if (!(options.min_search_window_m >= 0.0 && std::isfinite(options.min_search_window_m))) {
-    throw std::invalid_argument(
-        "constraint_builder option 'min_search_window_m': expected a finite value >= 0, got " +
-        std::to_string(options.min_search_window_m));
-  }
-  if (!(options.search_window_per_travel >= 0.0 &&
-        std::isfinite(options.search_window_per_travel))) {
-    throw std::invalid_argument(
-        "constraint_builder option 'search_window_per_travel': expected a finite value >= 0, "
-        "got " +
-        std::to_string(options.search_window_per_travel));
-  }
+  RequireNonNegative("see_through_slack_m", options.see_through_slack_m);
+  RequireNonNegative("min_search_window_m", options.min_search_window_m);
+  RequireNonNegative("search_window_per_travel", options.search_window_per_travel);
   if (!(options.min_angular_search_window_deg >= 0.0 &&
         options.angular_search_window_deg_per_m >= 0.0 &&
         std::isfinite(options.min_angular_search_window_deg) &&
@@ -120,22 +113,12 @@ void Validate(const ConstraintBuilderOptions& options) {
         "constraint_builder options 'min_angular_search_window_deg' and "
         "'angular_search_window_deg_per_m': expected finite values >= 0");
   }
-  if (!(options.max_sample_spacing_m >= 0.0) || std::isinf(options.max_sample_spacing_m)) {
-    throw std::invalid_argument(
-        "constraint_builder option 'max_sample_spacing_m': expected a finite value >= 0, got " +
-        std::to_string(options.max_sample_spacing_m));
-  }
+  RequireNonNegative("max_sample_spacing_m", options.max_sample_spacing_m);
   if (options.min_num_points < 1) {
     throw std::invalid_argument("constraint_builder option 'min_num_points': expected >= 1, got " +
                                 std::to_string(options.min_num_points));
   }
-  if (!(options.wide_ambiguity_min_innovation_m >= 0.0 &&
-        std::isfinite(options.wide_ambiguity_min_innovation_m))) {
-    throw std::invalid_argument(
-        "constraint_builder option 'wide_ambiguity_min_innovation_m': expected a finite value "
-        ">= 0, got " +
-        std::to_string(options.wide_ambiguity_min_innovation_m));
-  }
+  RequireNonNegative("wide_ambiguity_min_innovation_m", options.wide_ambiguity_min_innovation_m);
   RequirePositive("wide_ambiguity_window_factor", options.wide_ambiguity_window_factor);
   RequirePositive("wide_ambiguity_max_window_m", options.wide_ambiguity_max_window_m);
   RequirePositive("loop_closure_translation_weight", options.loop_closure_translation_weight);
