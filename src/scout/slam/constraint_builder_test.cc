@@ -257,8 +257,8 @@ std::vector<Wall> RepeatingHall() {
 // The robot stands at x = 0; drift put it at x = 5.2. The search window
 // (1 m + 2 % of 125 m = 3.5 m) reaches the copy of its place at x = 8 but not
 // x = 0, so the match lands 8 m off. Searching again around that match, three
-// times its distance from the estimate (8.4 m), finds x = 0 and x = 16 as good:
-// ambiguous, rejected.
+// times its distance from the estimate (8.4 m), reaches x = 0 and x = 16,
+// which look the same: the match is no longer the one best, and is rejected.
 TEST(ConstraintBuilderTest, AMatchFarFromTheEstimateMustStayUniqueInAWiderWindow) {
   const std::vector<Wall> walls = RepeatingHall();
   std::vector<Rigid2d> poses;
