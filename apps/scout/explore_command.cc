@@ -328,8 +328,16 @@ int RunExplore(const ExploreArgs& args) {
   int snapshots = 0;
   for (const exploration::IssuedGoal& g : result.goals) {
     if (g.map_then == nullptr) continue;
+    const std::string name = "unreachable-goal-" + std::to_string(++snapshots);
     io::WritePlanPicture(*g.map_then, {g.robot_map, g.goal_map, g.target_map, g.path_map},
-                         out.Stage("unreachable-goal-" + std::to_string(++snapshots) + ".png"));
+                         out.Stage(name + ".png"));
+    // The same goal in the true world, where the scans that mapped it put
+    // it: shows which wall the map had wrong.
+    io::WritePlanPicture(loop.world().map, {g.robot_world, g.goal_world, g.target_world, {}},
+                         out.Stage(name + "-truth.png"));
+    std::cerr << "explore: unreachable goal " << snapshots << " at t=" << g.sim_time_s
+              << " s: robot at (" << g.robot_world.x() << ", " << g.robot_world.y() << ") sent to ("
+              << g.target_world.x() << ", " << g.target_world.y() << ") in the true world\n";
   }
   const std::filesystem::path summary_path = out.Stage("summary.json");
   WriteTextFileAtomically(summary_path, summary.dump(2) + "\n");
@@ -356,7 +364,7 @@ int RunExplore(const ExploreArgs& args) {
                "frontier.csv, coverage.csv, report.html, figures/"
             << (log ? ", sensor.log" : "")
             << (snapshots > 0 ? ", unreachable-goal-*.png (the map each goal the true world made "
-                                "unreachable was chosen on)"
+                                "unreachable was chosen on, and the true world around it)"
                               : "")
             << "\n";
   return 0;
