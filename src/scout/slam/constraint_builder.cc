@@ -105,14 +105,8 @@ void Validate(const ConstraintBuilderOptions& options) {
   RequireNonNegative("see_through_slack_m", options.see_through_slack_m);
   RequireNonNegative("min_search_window_m", options.min_search_window_m);
   RequireNonNegative("search_window_per_travel", options.search_window_per_travel);
-  if (!(options.min_angular_search_window_deg >= 0.0 &&
-        options.angular_search_window_deg_per_m >= 0.0 &&
-        std::isfinite(options.min_angular_search_window_deg) &&
-        std::isfinite(options.angular_search_window_deg_per_m))) {
-    throw std::invalid_argument(
-        "constraint_builder options 'min_angular_search_window_deg' and "
-        "'angular_search_window_deg_per_m': expected finite values >= 0");
-  }
+  RequireNonNegative("min_angular_search_window_deg", options.min_angular_search_window_deg);
+  RequireNonNegative("angular_search_window_deg_per_m", options.angular_search_window_deg_per_m);
   RequireNonNegative("max_sample_spacing_m", options.max_sample_spacing_m);
   if (options.min_num_points < 1) {
     throw std::invalid_argument("constraint_builder option 'min_num_points': expected >= 1, got " +
