@@ -48,6 +48,14 @@ rm "$OUT/explore-b/build.txt"
 store_finished explore-b
 [[ ! -e $STORE/explore-b ]] || fail "a run without build.txt was stored"
 
+# --jobs takes a positive number of runs; anything else stops before a run starts.
+for bad in 0 -1 two ''; do
+  status=0
+  message=$(bash scripts/results --jobs "$bad" 2>&1) || status=$?
+  [[ $status == 2 && $message == *"--jobs expects a positive integer"* ]] ||
+    fail "--jobs '$bad' gave exit $status: $message"
+done
+
 if ! git cat-file -e "$FRONTIER_EXACT_COMMIT^{commit}" 2>/dev/null ||
   ! git cat-file -e "$FRONTIER_EXACT_COMMIT~1^{commit}" 2>/dev/null; then
   echo "SKIP: no history back to $FRONTIER_EXACT_COMMIT (shallow clone); staleness not tested"
@@ -66,4 +74,9 @@ echo "$head +modified" >"$OUT/replay-a/build.txt"
 rm "$OUT/replay-a/build.txt"
 touch -d @0 "$OUT/replay-a/summary.json"
 [[ -n $(stale_since "$FRONTIER_EXACT_COMMIT" replay-a) ]] || fail "an old run without build.txt is not stale"
+# An explore run is stale when its build lacks the last commit that changed what the robot does.
+make_run explore-c "$(git rev-parse --short=12 "$EXPLORE_BEHAVIOUR_COMMIT~1")"
+[[ $(stale_section_run explore explore-c) == '`explore-c` ' ]] || fail "an explore run older than $EXPLORE_BEHAVIOUR_COMMIT is not stale"
+git rev-parse --short=12 "$EXPLORE_BEHAVIOUR_COMMIT" >"$OUT/explore-c/build.txt"
+[[ -z $(stale_section_run explore explore-c) ]] || fail "an explore run made by $EXPLORE_BEHAVIOUR_COMMIT is stale"
 echo "results store: all checks passed"
