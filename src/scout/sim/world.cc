@@ -59,9 +59,18 @@ Eigen::Vector2d ChooseStartPosition(const grid::OccupancyMap& map, const std::st
   return map.limits.CellCenter(map.limits.CellOfFlatIndex(best));
 }
 
+std::string MapWorldName(const std::filesystem::path& yaml) {
+  // map_saver writes map.yaml by default, so that stem names nothing; the directory
+  // holding it (e.g. hbrs-c069-lab/map.yaml) usually does.
+  const std::string stem = yaml.stem().string();
+  if (stem != "map") return stem;
+  const std::string directory = std::filesystem::absolute(yaml).parent_path().filename().string();
+  return directory.empty() ? stem : directory;
+}
+
 World LoadMapWorld(const std::filesystem::path& yaml) {
   World world;
-  world.name = yaml.stem().string();
+  world.name = MapWorldName(yaml);
   world.map = grid::ReadMapServerMap(yaml);
   world.start = ChooseStartPosition(world.map, "map '" + yaml.string() + "'");
   return world;

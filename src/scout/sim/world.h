@@ -25,8 +25,12 @@ struct World {
 // map has no free cell.
 Eigen::Vector2d ChooseStartPosition(const grid::OccupancyMap& map, const std::string& what);
 
-// Loads a ROS map_server map (YAML + image) as a world named after the file's
-// stem, starting at ChooseStartPosition. Throws InputError on a bad file or a
+// The name of the world in a map_server YAML file: the file's stem, or the name of
+// its directory when the stem is map_saver's default "map".
+std::string MapWorldName(const std::filesystem::path& yaml);
+
+// Loads a ROS map_server map (YAML + image) as a world named MapWorldName(yaml),
+// starting at ChooseStartPosition. Throws InputError on a bad file or a
 // map without free cells.
 World LoadMapWorld(const std::filesystem::path& yaml);
 

@@ -82,6 +82,16 @@ TEST(LoadMapWorld, StartsAtLargestClearanceOfLargestComponent) {
   EXPECT_EQ(world.map.at(world.map.limits.CellContaining(world.start)), grid::CellState::kFree);
 }
 
+TEST(LoadMapWorld, NamesMapSaverDefaultFileAfterItsDirectory) {
+  const TempDirectory dir;
+  std::filesystem::create_directory(dir.path() / "lab-c069");
+  const std::filesystem::path yaml = dir.path() / "lab-c069" / "map.yaml";
+  grid::WriteMapServerMap(MakeTwoRoomMap(), yaml);
+  EXPECT_EQ(LoadMapWorld(yaml).name, "lab-c069");
+  EXPECT_EQ(MapWorldName("floors/building_31.yaml"), "building_31");
+  EXPECT_EQ(MapWorldName("/maps/willow/map.yaml"), "willow");
+}
+
 TEST(LoadMapWorld, MapWithoutFreeCellIsAnInputError) {
   const TempDirectory dir;
   const std::filesystem::path yaml = dir.path() / "solid.yaml";
