@@ -321,6 +321,16 @@ write_document() {
       echo
     fi
     tables explore "${EXPLORE[@]}"
+    echo "Why the two centre-seeking baselines stop early (\`no_progress\` with reachable frontier"
+    echo "left): their goals are centres of frontier pieces, not frontier cells. A centre often lies"
+    echo "in unknown space or behind a wall, where no plan reaches it (\`goals.no_plan\` in a run's"
+    echo "\`summary.json\`), or in space the robot maps on its way, so the goal is dropped before"
+    echo "arrival (\`goals.seen_before_arrival\`); explore-lite's centroid of a piece that curves"
+    echo "round the robot (in the museum's open halls, the ring where the start's free rays end) is"
+    echo "where the robot already stands. Such goals are set aside until the map around them"
+    echo "changes, and when only they are left the run stops. Scout's policy and nearest send the"
+    echo "robot to frontier cells themselves. (README, *Status*, traces single runs.)"
+    echo
     explore_figures "${EXPLORE[@]}"
     echo "## (c) ε sweep (bfs, direct) on the frontier-bench office"
     echo
