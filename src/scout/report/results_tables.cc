@@ -7,6 +7,7 @@
 #include <map>
 #include <optional>
 #include <sstream>
+#include <tuple>
 
 #include "scout/common/error.h"
 #include "scout/report/run_data.h"
@@ -251,6 +252,67 @@ std::optional<double> RealtimeFactor(const Json& summary) {
   return *sim / *wall;
 }
 
+// (world, goal policy, seed) of an explore run, and its paths to 99 % and 95 %.
+using PolicyRun = std::tuple<std::string, std::string, std::string>;
+struct PathsToCoverage {
+  std::optional<double> path_99, path_95;
+};
+
+// Scout's policy against each other policy of the same world, on the seeds
+// where both reached the level: means over different sets of seeds (a policy
+// that reaches 99 % only on its easy seeds) would favour the one that fails
+// more often.
+void AppendAgainstBaselines(const std::vector<std::pair<std::string, std::string>>& order,
+                            const std::map<PolicyRun, PathsToCoverage>& paths,
+                            std::ostringstream& out) {
+  constexpr const char* kScout = "scout";
+  std::vector<Row> rows;
+  for (const auto& [world, policy] : order) {
+    if (policy == kScout) continue;
+    struct Paired {
+      int seeds = 0;
+      double scout_m = 0.0, other_m = 0.0;
+    };
+    Paired at_99, at_95;
+    bool scout_ran = false;
+    for (const auto& [run, other] : paths) {
+      const auto& [w, p, seed] = run;
+      if (w != world || p != policy) continue;
+      const auto scout = paths.find({world, kScout, seed});
+      if (scout == paths.end()) continue;
+      scout_ran = true;
+      const auto pair = [](Paired& sum, std::optional<double> a, std::optional<double> b) {
+        if (!a || !b) return;
+        ++sum.seeds, sum.scout_m += *a, sum.other_m += *b;
+      };
+      pair(at_99, scout->second.path_99, other.path_99);
+      pair(at_95, scout->second.path_95, other.path_95);
+    }
+    if (!scout_ran) continue;
+    Row row{world, policy};
+    for (const Paired& p : {at_99, at_95}) {
+      row.push_back(std::to_string(p.seeds));
+      const auto mean = [&](double sum) {
+        return p.seeds > 0 ? std::optional<double>(sum / p.seeds) : std::nullopt;
+      };
+      row.push_back(Fixed(mean(p.scout_m), 0));
+      row.push_back(Fixed(mean(p.other_m), 0));
+      row.push_back(Fixed(p.seeds > 0 && p.other_m > 0.0
+                              ? std::optional<double>(p.scout_m / p.other_m)
+                              : std::nullopt,
+                          2));
+    }
+    rows.push_back(std::move(row));
+  }
+  if (rows.empty()) return;
+  out << "Scout's goal policy against each other policy, on the seeds where both reached the "
+         "level (paired by seed; ratio below 1: Scout needed less path):\n\n";
+  AppendTable({"world", "other policy", "seeds both 99 %", "Scout path to 99 % m",
+               "other path to 99 % m", "Scout / other (99 %)", "seeds both 95 %",
+               "Scout path to 95 % m", "other path to 95 % m", "Scout / other (95 %)"},
+              rows, out);
+}
+
 void AppendExplore(const std::vector<RunData>& runs, std::ostringstream& out) {
   std::vector<Row> rows;
   struct Group {
@@ -262,6 +324,7 @@ void AppendExplore(const std::vector<RunData>& runs, std::ostringstream& out) {
   };
   std::vector<std::pair<std::string, std::string>> order;
   std::map<std::pair<std::string, std::string>, Group> groups;
+  std::map<PolicyRun, PathsToCoverage> paths;
   for (const RunData& run : runs) {
     const Json& s = run.summary;
     const std::optional<double> path_99 = PathToCoverage(run, 0.99);
@@ -278,6 +341,7 @@ void AppendExplore(const std::vector<RunData>& runs, std::ostringstream& out) {
                     Fixed(Number(s, "ate_rmse_m"), 3), Fixed(Number(s, "wall_time_s"), 0),
                     Fixed(RealtimeFactor(s), 1)});
     const std::pair<std::string, std::string> key{Text(s, "world"), Text(s, "goals_policy")};
+    paths[{key.first, key.second, Text(s, "seed")}] = {path_99, path_95};
     if (!groups.count(key)) order.push_back(key);
     Group& g = groups[key];
     const double coverage = Number(s, "coverage").value_or(0.0);
@@ -324,6 +388,7 @@ void AppendExplore(const std::vector<RunData>& runs, std::ostringstream& out) {
                "mean path to 99 % m", "mean sim s to 99 %", "reached 95 %", "mean path to 95 % m",
                "unreachable goals", "collisions", "mean ATE m", "max ATE m"},
               means, out);
+  AppendAgainstBaselines(order, paths, out);
 }
 
 }  // namespace

@@ -106,6 +106,35 @@ TEST(ResultsTables, ExploreRowsAndMeansPerWorldAndPolicy) {
       << md;
 }
 
+// An explore run of 'policy' on the office whose coverage passes 95 % at
+// 'path_95' m and 99 % at 'path_99' m of path (0: never).
+std::filesystem::path ExploreRun(const std::string& policy, int seed, int path_95, int path_99) {
+  const std::filesystem::path dir =
+      FreshDir("tables_paired_" + policy + "_" + std::to_string(seed));
+  WriteTextFileAtomically(dir / "summary.json", R"({"world": "office", "goals_policy": ")" +
+                                                    policy + R"(", "seed": )" +
+                                                    std::to_string(seed) + "}");
+  std::string csv = "sim_time_s,path_length_m,coverage\n0,0,0\n";
+  if (path_95 > 0) csv += "10," + std::to_string(path_95) + ",0.96\n";
+  if (path_99 > 0) csv += "20," + std::to_string(path_99) + ",0.995\n";
+  WriteTextFileAtomically(dir / "coverage.csv", csv);
+  return dir;
+}
+
+TEST(ResultsTables, ScoutAgainstEachBaselineOnTheSeedsBothReached) {
+  // 99 %: only seed 1 is reached by both (Scout misses it on seed 2, where
+  // nearest's short path must not count). 95 %: both seeds.
+  const std::vector<std::filesystem::path> dirs = {
+      ExploreRun("scout", 1, 200, 240), ExploreRun("scout", 2, 150, 0),
+      ExploreRun("nearest", 1, 250, 300), ExploreRun("nearest", 2, 150, 100)};
+  const std::string md = ResultsTables(TableKind::kExplore, dirs);
+  EXPECT_TRUE(Contains(md, "| office | nearest | 1 | 240 | 300 | 0.80 | 2 | 175 | 200 | 0.88 |"))
+      << md;
+  // Without Scout's policy in the world there is nothing to compare.
+  EXPECT_FALSE(Contains(ResultsTables(TableKind::kExplore, {dirs[2], dirs[3]}),
+                        "Scout's goal policy against"));
+}
+
 TEST(ResultsTables, PWithoutDfdIsAgainstEveryLocalPointOfEveryRound) {
   // frontier-bench --strategies direct: the summary's P is null, but dfd would
   // have queried the 100 + 120 + 140 local points of the three rounds.
