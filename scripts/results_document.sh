@@ -249,7 +249,11 @@ store_finished() {
 }
 
 write_document() {
-  local all=("${REPLAY[@]}" "${EXPLORE[@]}" "${EPS[@]}" "${SIZE[@]}" "${BENCH[@]}")
+  local all=("${REPLAY[@]}" "${EXPLORE[@]}" "${EPS[@]}" "${SIZE[@]}" "${BENCH[@]}") lock_fd
+  # Two scripts/results at once (runs started separately, or --doc-only beside a running
+  # evaluation) share the document, its temporary file and the figures: one writes at a time.
+  exec {lock_fd}>"$OUT/.document.lock"
+  flock "$lock_fd"
   store_finished "${all[@]}"
   rm -rf "$FIG"
   mkdir -p "$FIG" "$(dirname "$DOC")"
@@ -369,6 +373,7 @@ write_document() {
     cat docs/results_paper.md
   } >"$DOC.tmp"
   mv "$DOC.tmp" "$DOC"
+  exec {lock_fd}>&-
 }
 
 # check_document: the quick run must have produced tables for every section and figures.
