@@ -333,7 +333,7 @@ write_document() {
     echo "round the robot (in the museum's open halls, the ring where the start's free rays end) is"
     echo "where the robot already stands. Such goals are set aside until the map around them"
     echo "changes, and when only they are left the run stops. Scout's policy and nearest send the"
-    echo "robot to frontier cells themselves. (README, *Status*, traces single runs.)"
+    echo "robot to frontier cells themselves. (\`docs/EXPERIMENTS.md\` traces single runs.)"
     echo
     explore_figures "${EXPLORE[@]}"
     echo "## (c) ε sweep (bfs, direct) on the frontier-bench office"
