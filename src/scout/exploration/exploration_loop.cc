@@ -129,7 +129,8 @@ void ExplorationLoop::FeedSensorsUntimed() {
     last_local_ = local.last_pose();
     odometry_at_last_local_ = latest_odometry_;
   }
-  recent_returns_.Add(scan->time_s, LocalPose(), latest_returns_);
+  latest_scan_local_pose_ = LocalPose();
+  recent_returns_.Add(scan->time_s, latest_scan_local_pose_, latest_returns_);
   if (inserted || slam_changed_) {
     // The newest node ties the local frame to the global one; optimisations
     // move it, so it is re-read after every insertion or event (alone: a
@@ -393,6 +394,19 @@ ExplorationResult ExplorationLoop::Run(const ProgressCallback& progress,
       in.submaps = submap_poses_;
       in.map_changed = changed;
       in.obstacles = &latest_returns_;
+      if (e.goals.guard.predict_motion) {
+        // The scan is up to one scan period old: move its returns to where
+        // odometry says the robot is now, and tell the guard how it moves.
+        const geometry::Rigid2d now_from_scan = LocalPose().inverse() * latest_scan_local_pose_;
+        guard_returns_.clear();
+        for (const Eigen::Vector2d& p : latest_returns_)
+          guard_returns_.push_back(now_from_scan * p);
+        in.obstacles = &guard_returns_;
+        const sim::DiffDriveRobot& base = robot_.robot();
+        in.base = explore::BaseMotion{base.linear_velocity_mps(), base.angular_velocity_radps(),
+                                      base.options().max_linear_accel_mps2,
+                                      base.options().max_angular_accel_radps2, e.dt_s};
+      }
       in.recent_returns = [this] { return recent_returns_.Around(LocalPose()); };
       in.driven = &driven_;
       const frontier::Stopwatch watch;

@@ -222,6 +222,11 @@ class ExplorationLoop {
   geometry::Rigid2d world_from_map_;
   // The latest scan's returns (robot frame), for the collision guard.
   std::vector<Eigen::Vector2d> latest_returns_;
+  // Where local SLAM (odometry-extrapolated) had the robot at the latest
+  // scan, and that scan's returns moved to the current pose
+  // (CollisionGuardOptions::predict_motion).
+  geometry::Rigid2d latest_scan_local_pose_;
+  std::vector<Eigen::Vector2d> guard_returns_;
   // The recent scans' returns near the robot (local SLAM frame), for backing up.
   explore::ScanMemory recent_returns_;
   // SLAM's node positions (global), refreshed with the fused map.

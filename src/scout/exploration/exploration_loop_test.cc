@@ -76,6 +76,19 @@ TEST(ExplorationLoopTest, ExploresASmallBuildingCompletelyAndQuickly) {
   }
 }
 
+// The guard with the base's motion predicted (off by default) explores the
+// same building completely, without collision, on time.
+TEST(ExplorationLoopTest, ExploresTheSmallBuildingWithTheGuardPredictingTheBase) {
+  ExplorationOptions o;
+  o.explore.goals.guard.predict_motion = true;
+  const ExplorationResult r = Explore(o, 7);
+  EXPECT_EQ(r.terminated, Termination::kComplete);
+  EXPECT_GE(r.coverage, 0.97);
+  EXPECT_EQ(r.collisions, 0);
+  EXPECT_EQ(r.unreachable_goals, 0);
+  EXPECT_GT(r.counters.goals_reached, 0);
+}
+
 TEST(ExplorationLoopTest, SameSeedSameRun) {
   ExplorationOptions o;
   o.explore.max_sim_time_s = 40.0;

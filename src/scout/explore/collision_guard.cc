@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <vector>
 
 #include "scout/explore/option_check.h"
 
@@ -39,7 +41,75 @@ double HitDistance(double k, double reach_m, double keep_m,
   return hit_m;
 }
 
+// Moves 'value' toward 'target' by at most 'max_step'.
+double Ramp(double value, double target, double max_step) {
+  return value + std::clamp(target - value, -max_step, max_step);
+}
+
+// The commanded arc alone, as if speed and turn rate changed at once.
+GuardedCommand GuardCommandedArc(const VelocityCommand& command,
+                                 const std::vector<Eigen::Vector2d>& obstacles,
+                                 double robot_radius_m, const CollisionGuardOptions& options,
+                                 double max_angular_radps);
+
 }  // namespace
+
+bool CanStopAfter(const VelocityCommand& command, const BaseMotion& base,
+                  const std::vector<Eigen::Vector2d>& obstacles, double robot_radius_m,
+                  double clearance_m) {
+  if (!(base.max_linear_accel_mps2 > 0.0) || !(base.max_angular_accel_radps2 > 0.0) ||
+      !(base.control_period_s > 0.0) || !std::isfinite(base.linear_mps) ||
+      !std::isfinite(base.angular_radps) || !std::isfinite(command.linear_mps) ||
+      !std::isfinite(command.angular_radps)) {
+    throw std::invalid_argument(
+        "CanStopAfter: expected positive accelerations and control period, finite velocities");
+  }
+  const double keep_m = robot_radius_m + clearance_m;
+  const double a = base.max_linear_accel_mps2;
+  const double period_s = base.control_period_s;
+  // How far the disc's centre can get: the fastest speed reachable within the
+  // period, held for the period, then braked.
+  const double peak_mps =
+      std::max(std::abs(base.linear_mps), std::abs(command.linear_mps)) + a * period_s;
+  const double reach_m = peak_mps * period_s + peak_mps * peak_mps / (2.0 * a) + kStepM;
+  std::vector<Eigen::Vector2d> near;
+  std::vector<double> start_m;
+  for (const Eigen::Vector2d& p : obstacles) {
+    const double d = p.norm();
+    if (std::isfinite(d) && d < reach_m + keep_m) {
+      near.push_back(p);
+      start_m.push_back(d);
+    }
+  }
+  if (near.empty()) return true;
+  // Steps short enough that the disc moves at most ~5 mm between checks.
+  const double dt_s = std::min(period_s / 5.0, 0.01);
+  double v = base.linear_mps;
+  double w = base.angular_radps;
+  Eigen::Vector2d position = Eigen::Vector2d::Zero();
+  double heading_rad = 0.0;
+  const auto advance_and_check = [&](double v_target, double w_target) {
+    v = Ramp(v, v_target, a * dt_s);
+    w = Ramp(w, w_target, base.max_angular_accel_radps2 * dt_s);
+    const double mid_rad = heading_rad + 0.5 * w * dt_s;
+    position += v * dt_s * Eigen::Vector2d(std::cos(mid_rad), std::sin(mid_rad));
+    heading_rad += w * dt_s;
+    for (size_t i = 0; i < near.size(); ++i) {
+      const double d = (near[i] - position).norm();
+      if (d < keep_m && d < start_m[i]) return false;
+    }
+    return true;
+  };
+  for (double t_s = 0.0; t_s < period_s - 1e-12; t_s += dt_s) {
+    if (!advance_and_check(command.linear_mps, command.angular_radps)) return false;
+  }
+  // Braking ends when the wheels stop translating; turning on the spot
+  // afterwards sweeps nothing.
+  while (v != 0.0) {
+    if (!advance_and_check(0.0, 0.0)) return false;
+  }
+  return true;
+}
 
 void Validate(const CollisionGuardOptions& o) {
   CheckAtLeast("guard", "clearance_m", o.clearance_m, 0.0);
@@ -51,7 +121,49 @@ void Validate(const CollisionGuardOptions& o) {
 
 GuardedCommand GuardCommand(const VelocityCommand& command,
                             const std::vector<Eigen::Vector2d>& obstacles, double robot_radius_m,
-                            const CollisionGuardOptions& options, double max_angular_radps) {
+                            const CollisionGuardOptions& options, double max_angular_radps,
+                            const BaseMotion* base) {
+  GuardedCommand out =
+      GuardCommandedArc(command, obstacles, robot_radius_m, options, max_angular_radps);
+  if (!options.predict_motion || base == nullptr || options.horizon_s <= 0.0 ||
+      command.linear_mps < 0.0) {
+    return out;
+  }
+  if (CanStopAfter(out.command, *base, obstacles, robot_radius_m, options.clearance_m)) {
+    return out;
+  }
+  // The nearest arc at the commanded speed after which the robot can still
+  // stop, turning away from the nearest obstacle ahead first.
+  const double v = command.linear_mps;
+  if (v > 0.0) {
+    const double k = command.angular_radps / v;
+    double side = 1.0;
+    HitDistance(k, v * options.horizon_s + 0.5, robot_radius_m + options.clearance_m, obstacles,
+                &side);
+    const int steps = static_cast<int>(
+        std::floor(options.steer_max_curvature_per_m / options.steer_step_per_m + 1e-9));
+    for (int j = 1; j <= steps; ++j) {
+      for (const double sign : {-side, side}) {
+        const double kc = k + sign * j * options.steer_step_per_m;
+        double vc = v;
+        if (std::abs(vc * kc) > max_angular_radps) vc = max_angular_radps / std::abs(kc);
+        if (vc <= 0.0) continue;
+        const VelocityCommand arc{vc, vc * kc};
+        if (CanStopAfter(arc, *base, obstacles, robot_radius_m, options.clearance_m)) {
+          return {arc, vc < v, false, true};
+        }
+      }
+    }
+  }
+  return {{0.0, 0.0}, true, true, false};
+}
+
+namespace {
+
+GuardedCommand GuardCommandedArc(const VelocityCommand& command,
+                                 const std::vector<Eigen::Vector2d>& obstacles,
+                                 double robot_radius_m, const CollisionGuardOptions& options,
+                                 double max_angular_radps) {
   GuardedCommand out{command, false, false, false};
   const double v = command.linear_mps;
   if (v <= 0.0 || options.horizon_s <= 0.0) return out;
@@ -93,6 +205,8 @@ GuardedCommand GuardCommand(const VelocityCommand& command,
   }
   return out;
 }
+
+}  // namespace
 
 GuardedCommand GuardBackward(const VelocityCommand& command,
                              const std::vector<Eigen::Vector2d>& obstacles, double robot_radius_m,

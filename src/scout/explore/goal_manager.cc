@@ -553,7 +553,7 @@ void GoalManager::Drive(const ExploreInput& in, ExploreStatus& status) {
   if (in.obstacles) {
     const GuardedCommand g =
         GuardCommand(status.command, *in.obstacles, map_->options().robot_radius_m, options_.guard,
-                     follower_.options().max_angular_speed_radps);
+                     follower_.options().max_angular_speed_radps, in.base ? &*in.base : nullptr);
     status.command = g.command;
     counters_.guard_steers += g.steered;
     if (g.stopped && !guard_stopped_) ++counters_.guard_stops;

@@ -149,6 +149,9 @@ struct ExploreInput {
   // The latest scan's returns in the robot frame (metres), for the collision
   // guard; null: no guard.
   const std::vector<Eigen::Vector2d>* obstacles = nullptr;
+  // The base's velocity now and its limits, for the guard's predict_motion;
+  // empty: the commanded arc alone is checked.
+  std::optional<BaseMotion> base;
   // The returns of the recent scans (ScanMemory) in the robot frame, asked
   // for only when backing up (CollisionGuardOptions::memory_s); empty: the
   // map alone is checked behind the robot.

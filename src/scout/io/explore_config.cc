@@ -38,6 +38,7 @@ void ReadGoals(YamlSection s, explore::GoalManagerOptions* o) {
     g.ReadNonNegative("steer_max_curvature_per_m", &o->guard.steer_max_curvature_per_m);
     g.ReadNonNegative("steer_step_per_m", &o->guard.steer_step_per_m);
     g.ReadNonNegative("memory_s", &o->guard.memory_s);
+    g.ReadBool("predict_motion", &o->guard.predict_motion);
     g.RejectUnknownKeys();
   }
   {

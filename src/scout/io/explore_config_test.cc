@@ -49,6 +49,7 @@ TEST_F(ExploreConfigTest, DefaultFileMatchesTheBuiltInDefaults) {
   EXPECT_DOUBLE_EQ(c.explore.goals.guard.clearance_m, d.explore.goals.guard.clearance_m);
   EXPECT_DOUBLE_EQ(c.explore.goals.guard.horizon_s, d.explore.goals.guard.horizon_s);
   EXPECT_DOUBLE_EQ(c.explore.goals.guard.memory_s, d.explore.goals.guard.memory_s);
+  EXPECT_EQ(c.explore.goals.guard.predict_motion, d.explore.goals.guard.predict_motion);
   EXPECT_DOUBLE_EQ(c.explore.traversability.narrow_margin_m,
                    d.explore.traversability.narrow_margin_m);
   EXPECT_EQ(c.explore.goals.return_to_start, d.explore.goals.return_to_start);
@@ -75,11 +76,12 @@ TEST_F(ExploreConfigTest, DefaultFileMatchesTheBuiltInDefaults) {
 TEST_F(ExploreConfigTest, ValuesAreReadWithTheirUnits) {
   const ScoutConfig c = Load(
       "explore:\n  max_sim_time_s: 120\n  initial_turn_deg: 90\n  goals:\n    return_to_start: "
-      "true\n  follower:\n    rotate_in_place_heading_deg: 30\nrobot:\n  start_heading_deg: "
-      "-90\n  lidar:\n    beams: 361\n");
+      "true\n    guard:\n      predict_motion: true\n  follower:\n    rotate_in_place_heading_deg: "
+      "30\nrobot:\n  start_heading_deg: -90\n  lidar:\n    beams: 361\n");
   EXPECT_DOUBLE_EQ(c.explore.max_sim_time_s, 120.0);
   EXPECT_NEAR(c.explore.initial_turn_rad, std::numbers::pi / 2, 1e-12);
   EXPECT_TRUE(c.explore.goals.return_to_start);
+  EXPECT_TRUE(c.explore.goals.guard.predict_motion);
   EXPECT_NEAR(c.explore.follower.rotate_in_place_heading_rad, std::numbers::pi / 6, 1e-12);
   EXPECT_NEAR(c.robot.start_heading_rad, -std::numbers::pi / 2, 1e-12);
   EXPECT_EQ(c.robot.lidar.beams, 361);
@@ -120,6 +122,8 @@ TEST_F(ExploreConfigTest, ErrorsNameTheKey) {
   EXPECT_NE(hysteresis.find("max_failures"), std::string::npos) << hysteresis;
   const std::string follower = ErrorOf("explore:\n  follower:\n    min_linear_speed_mps: 0.9\n");
   EXPECT_NE(follower.find("explore.follower"), std::string::npos) << follower;
+  const std::string predict = ErrorOf("explore:\n  goals:\n    guard:\n      predict_motion: 2\n");
+  EXPECT_NE(predict.find("explore.goals.guard.predict_motion"), std::string::npos) << predict;
   const std::string dropout = ErrorOf("robot:\n  lidar:\n    dropout_probability: 1.5\n");
   EXPECT_NE(dropout.find("dropout_probability"), std::string::npos) << dropout;
 }
