@@ -7,6 +7,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <vector>
 
 #include "scout/explore/collision_guard.h"
@@ -144,7 +145,7 @@ TEST(CollisionGuardMotionTest, TurningOnTheSpotStaysAllowedAtRest) {
 // A straight wall to the robot's right that its heading converges on at
 // 'angle_deg', its disc 'gap_m' from it (points 1 cm apart).
 std::vector<Eigen::Vector2d> ConvergingWall(double gap_m, double angle_deg) {
-  const double angle_rad = angle_deg * M_PI / 180.0;
+  const double angle_rad = angle_deg * std::numbers::pi / 180.0;
   const Eigen::Vector2d along(std::cos(angle_rad), std::sin(angle_rad));
   const Eigen::Vector2d through(0.0, -(kRadius + gap_m) / std::cos(angle_rad));
   std::vector<Eigen::Vector2d> wall;
