@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -44,6 +45,30 @@ double HitDistance(double k, double reach_m, double keep_m,
 // Moves 'value' toward 'target' by at most 'max_step'.
 double Ramp(double value, double target, double max_step) {
   return value + std::clamp(target - value, -max_step, max_step);
+}
+
+// The arcs the guard may steer instead of curvature k at speed v, nearest
+// first and turning toward -side first at each step (curvature k +- j steps
+// up to steer_max_curvature_per_m; slower where the turn rate would exceed
+// max_angular_radps). Returns the first arc for which passes(arc, curvature)
+// holds, if any.
+template <typename Passes>
+std::optional<VelocityCommand> NearestSteeredArc(double v, double k, double side,
+                                                 const CollisionGuardOptions& options,
+                                                 double max_angular_radps, const Passes& passes) {
+  const int steps = static_cast<int>(
+      std::floor(options.steer_max_curvature_per_m / options.steer_step_per_m + 1e-9));
+  for (int j = 1; j <= steps; ++j) {
+    for (const double sign : {-side, side}) {
+      const double kc = k + sign * j * options.steer_step_per_m;
+      double vc = v;
+      if (std::abs(vc * kc) > max_angular_radps) vc = max_angular_radps / std::abs(kc);
+      if (vc <= 0.0) continue;
+      const VelocityCommand arc{vc, vc * kc};
+      if (passes(arc, kc)) return arc;
+    }
+  }
+  return std::nullopt;
 }
 
 // The commanded arc alone, as if speed and turn rate changed at once.
@@ -140,20 +165,11 @@ GuardedCommand GuardCommand(const VelocityCommand& command,
     double side = 1.0;
     HitDistance(k, v * options.horizon_s + 0.5, robot_radius_m + options.clearance_m, obstacles,
                 &side);
-    const int steps = static_cast<int>(
-        std::floor(options.steer_max_curvature_per_m / options.steer_step_per_m + 1e-9));
-    for (int j = 1; j <= steps; ++j) {
-      for (const double sign : {-side, side}) {
-        const double kc = k + sign * j * options.steer_step_per_m;
-        double vc = v;
-        if (std::abs(vc * kc) > max_angular_radps) vc = max_angular_radps / std::abs(kc);
-        if (vc <= 0.0) continue;
-        const VelocityCommand arc{vc, vc * kc};
-        if (CanStopAfter(arc, *base, obstacles, robot_radius_m, options.clearance_m)) {
-          return {arc, vc < v, false, true};
-        }
-      }
-    }
+    const std::optional<VelocityCommand> arc = NearestSteeredArc(
+        v, k, side, options, max_angular_radps, [&](const VelocityCommand& c, double) {
+          return CanStopAfter(c, *base, obstacles, robot_radius_m, options.clearance_m);
+        });
+    if (arc) return {*arc, arc->linear_mps < v, false, true};
   }
   return {{0.0, 0.0}, true, true, false};
 }
@@ -174,21 +190,15 @@ GuardedCommand GuardCommandedArc(const VelocityCommand& command,
   const double hit_m = HitDistance(k, reach_m, keep_m, obstacles, &side);
   if (!std::isfinite(hit_m)) return out;
   // The nearest clear arc, turning away from the obstacle first.
-  const int steps = static_cast<int>(
-      std::floor(options.steer_max_curvature_per_m / options.steer_step_per_m + 1e-9));
-  for (int j = 1; j <= steps; ++j) {
-    for (const double sign : {-side, side}) {
-      const double kc = k + sign * j * options.steer_step_per_m;
-      double vc = v;
-      if (std::abs(vc * kc) > max_angular_radps) vc = max_angular_radps / std::abs(kc);
-      if (vc <= 0.0) continue;
-      if (std::isfinite(HitDistance(kc, vc * options.horizon_s, keep_m, obstacles, nullptr))) {
-        continue;
-      }
-      out.command = {vc, vc * kc};
-      out.steered = true;
-      return out;
-    }
+  const std::optional<VelocityCommand> arc = NearestSteeredArc(
+      v, k, side, options, max_angular_radps, [&](const VelocityCommand& c, double kc) {
+        return !std::isfinite(
+            HitDistance(kc, c.linear_mps * options.horizon_s, keep_m, obstacles, nullptr));
+      });
+  if (arc) {
+    out.command = *arc;
+    out.steered = true;
+    return out;
   }
   const double free_m = hit_m - kStepM;
   const double v_safe = free_m / options.horizon_s;
