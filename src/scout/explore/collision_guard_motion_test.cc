@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "scout/explore/collision_guard.h"
+#include "scout/explore/collision_guard_test_util.h"
 
 namespace scout::explore {
 namespace {
@@ -168,51 +169,41 @@ TEST(CollisionGuardMotionTest, BrakesOrTurnsAwayInTimeWhereTheCommandedArcGuardT
             kRadius + 0.03);
 }
 
-// Walls at any angle and distance, a base already moving, and a follower
-// whose command changes at random every period: from any state where braking
-// at once would still stop the robot in time, the guarded base never touches
-// the wall.
-RC_GTEST_PROP(CollisionGuardMotionProperty, NeverDrivesIntoAWallItCouldStillAvoid, ()) {
-  const std::vector<Eigen::Vector2d> wall =
-      ConvergingWall(*rc::gen::inRange(3, 60) * 0.01, *rc::gen::inRange(0, 90));
-  const double v0 = *rc::gen::inRange(0, 51) * 0.01;
-  const double w0 = *rc::gen::inRange(-100, 101) * 0.01;
-  RC_PRE(CanStopAfter({0.0, 0.0}, Base(v0, w0), wall, kRadius, 0.03));
-  // A few commands, each held for a random number of periods.
-  std::vector<VelocityCommand> commands;
-  const int num_commands = *rc::gen::inRange(1, 7);
-  for (int i = 0; i < num_commands; ++i) {
-    const VelocityCommand c{*rc::gen::inRange(1, 51) * 0.01, *rc::gen::inRange(-100, 101) * 0.01};
-    commands.insert(commands.end(), *rc::gen::inRange(1, 21), c);
-  }
-  CollisionGuardOptions o = Predicting();
-  o.steer_max_curvature_per_m = *rc::gen::element(0.0, 2.0, 4.0);
-  RC_ASSERT(ClosestApproachOfABase(commands, wall, v0, w0, o, 3.0) >= kRadius);
-}
-
-// Random obstacles ahead, a base already moving, and a follower whose
-// command changes at random every period (cutting corners, wobbling): from
-// any state where braking at once would still stop the robot in time, the
-// guarded base never touches an obstacle.
-RC_GTEST_PROP(CollisionGuardMotionProperty, NeverDrivesIntoAnObstacleItCouldStillAvoid, ()) {
-  const int n = *rc::gen::inRange(1, 20);
-  std::vector<Eigen::Vector2d> obstacles;
-  for (int i = 0; i < n; ++i) {
-    const double angle = *rc::gen::inRange(-157, 158) * 0.01;
-    const double range = 0.25 + *rc::gen::inRange(0, 200) * 0.01;
-    obstacles.push_back(range * Eigen::Vector2d(std::cos(angle), std::sin(angle)));
-  }
+// From a random velocity where braking at once would still stop the robot
+// short of 'obstacles', the base guarded with its motion predicted and
+// driven by 'commands' (one per period, the last repeating) never touches
+// them, whatever the steering limit.
+void CheckNeverTouches(const std::vector<Eigen::Vector2d>& obstacles,
+                       const std::vector<VelocityCommand>& commands) {
   const double v0 = *rc::gen::inRange(0, 51) * 0.01;
   const double w0 = *rc::gen::inRange(-100, 101) * 0.01;
   RC_PRE(CanStopAfter({0.0, 0.0}, Base(v0, w0), obstacles, kRadius, 0.03));
-  std::vector<VelocityCommand> commands;
-  const int num_commands = *rc::gen::inRange(1, 61);
-  for (int i = 0; i < num_commands; ++i) {
-    commands.push_back({*rc::gen::inRange(1, 51) * 0.01, *rc::gen::inRange(-100, 101) * 0.01});
-  }
   CollisionGuardOptions o = Predicting();
   o.steer_max_curvature_per_m = *rc::gen::element(0.0, 2.0, 4.0);
   RC_ASSERT(ClosestApproachOfABase(commands, obstacles, v0, w0, o, 3.0) >= kRadius);
+}
+
+// Walls at any angle and distance, a base already moving, and a follower
+// holding each of a few random commands for a random number of periods.
+RC_GTEST_PROP(CollisionGuardMotionProperty, NeverDrivesIntoAWallItCouldStillAvoid, ()) {
+  const std::vector<Eigen::Vector2d> wall =
+      ConvergingWall(*rc::gen::inRange(3, 60) * 0.01, *rc::gen::inRange(0, 90));
+  std::vector<VelocityCommand> commands;
+  const int num_commands = *rc::gen::inRange(1, 7);
+  for (int i = 0; i < num_commands; ++i) {
+    commands.insert(commands.end(), *rc::gen::inRange(1, 21), testing::RandomForwardCommand());
+  }
+  CheckNeverTouches(wall, commands);
+}
+
+// Random obstacles ahead, a base already moving, and a follower whose
+// command changes at random every period (cutting corners, wobbling).
+RC_GTEST_PROP(CollisionGuardMotionProperty, NeverDrivesIntoAnObstacleItCouldStillAvoid, ()) {
+  const std::vector<Eigen::Vector2d> obstacles = testing::RandomObstaclesAhead();
+  std::vector<VelocityCommand> commands;
+  const int num_commands = *rc::gen::inRange(1, 61);
+  for (int i = 0; i < num_commands; ++i) commands.push_back(testing::RandomForwardCommand());
+  CheckNeverTouches(obstacles, commands);
 }
 
 }  // namespace

@@ -6,6 +6,8 @@
 #include <Eigen/Geometry>
 #include <cmath>
 
+#include "scout/explore/collision_guard_test_util.h"
+
 namespace scout::explore {
 namespace {
 
@@ -180,15 +182,8 @@ RC_GTEST_PROP(CollisionGuardProperty, NeverBacksIntoAnObstacle, ()) {
 
 RC_GTEST_PROP(CollisionGuardProperty, NeverDrivesIntoAnObstacle, ()) {
   // Random obstacles outside the disc plus clearance; any forward command.
-  const int n = *rc::gen::inRange(1, 20);
-  std::vector<Eigen::Vector2d> obstacles;
-  for (int i = 0; i < n; ++i) {
-    const double angle = *rc::gen::inRange(-157, 158) * 0.01;
-    const double range = 0.25 + *rc::gen::inRange(0, 200) * 0.01;
-    obstacles.push_back(range * Eigen::Vector2d(std::cos(angle), std::sin(angle)));
-  }
-  const VelocityCommand command{*rc::gen::inRange(1, 51) * 0.01,
-                                *rc::gen::inRange(-100, 101) * 0.01};
+  const std::vector<Eigen::Vector2d> obstacles = testing::RandomObstaclesAhead();
+  const VelocityCommand command = testing::RandomForwardCommand();
   CollisionGuardOptions o;
   o.steer_max_curvature_per_m = *rc::gen::element(0.0, 2.0, 4.0);
   const double closest = ClosestApproach(command, obstacles, o, 3.0);
