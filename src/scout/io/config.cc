@@ -42,8 +42,10 @@ void ReadSynthetic(YamlSection s, synthetic::SyntheticStreamOptions* o) {
   }
   {
     YamlSection in = s.Section("insertion");
-    in.ReadPositive("hit_probability", &o->insertion.hit_probability);
-    in.ReadPositive("miss_probability", &o->insertion.miss_probability);
+    in.ReadInRange("hit_probability", &o->insertion.hit_probability, 0.5, 1.0,
+                   YamlSection::Bound::kExclusive, YamlSection::Bound::kExclusive);
+    in.ReadInRange("miss_probability", &o->insertion.miss_probability, 0.0, 0.5,
+                   YamlSection::Bound::kExclusive, YamlSection::Bound::kExclusive);
     in.RejectUnknownKeys();
   }
   {
@@ -102,6 +104,11 @@ ScoutConfig LoadConfig(const std::filesystem::path& path) {
   ReadRobotOptions(top.Section("robot"), &config.robot);
   top.RejectUnknownKeys();
   frontier::Validate(config.frontier);
+  try {
+    synthetic::Validate(config.synthetic);
+  } catch (const InputError& e) {
+    throw InputError(path.string() + ": " + e.what());
+  }
   try {
     slam::Validate(config.slam);
   } catch (const std::invalid_argument& e) {

@@ -109,7 +109,54 @@ TEST_F(ConfigTest, SlamValuesOverrideDefaultsAndErrorsNameTheKey) {
   // Out-of-range values caught by the module's own validation still name the file.
   e = ErrorOf("slam:\n  local:\n    submaps:\n      hit_probability: 0.4\n");
   EXPECT_NE(e.find("options.yaml"), std::string::npos) << e;
-  EXPECT_NE(e.find("hit"), std::string::npos) << e;
+  EXPECT_NE(e.find("slam.local.submaps.hit_probability"), std::string::npos) << e;
+  EXPECT_NE(e.find("(0.5, 1)"), std::string::npos) << e;
+  // Windows in degrees are checked, and named, in degrees.
+  e = ErrorOf(
+      "slam:\n  local:\n    real_time_correlative_scan_matcher:\n"
+      "      angular_search_window_deg: 400\n");
+  EXPECT_NE(e.find("slam.local.real_time_correlative_scan_matcher.angular_search_window_deg"),
+            std::string::npos)
+      << e;
+  EXPECT_NE(e.find("[0, 180]"), std::string::npos) << e;
+  e = ErrorOf("slam:\n  local:\n    range_filter:\n      min_range_m: 20\n");
+  EXPECT_NE(e.find("slam.local.range_filter.max_range_m"), std::string::npos) << e;
+}
+
+TEST_F(ConfigTest, ARepeatedOrNonScalarKeyIsAnError) {
+  // yaml-cpp keeps both entries of a repeated key; only the first would be read.
+  std::string e = ErrorOf("frontier:\n  epsilon_m: 0.1\n  epsilon_m: 0.2\n");
+  EXPECT_NE(e.find("options.yaml:3"), std::string::npos) << e;
+  EXPECT_NE(e.find("'frontier.epsilon_m' given twice"), std::string::npos) << e;
+  e = ErrorOf("frontier:\n  epsilon_m: 0.1\nfrontier:\n  epsilon_m: 0.3\n");
+  EXPECT_NE(e.find("'frontier' given twice"), std::string::npos) << e;
+  e = ErrorOf("frontier:\n  ? [a, b]\n  : 1\n");
+  EXPECT_NE(e.find("expected option names as keys"), std::string::npos) << e;
+}
+
+TEST_F(ConfigTest, SyntheticOptionsAreCheckedWhenTheFileLoads) {
+  std::string e = ErrorOf("synthetic:\n  insertion:\n    hit_probability: 0.3\n");
+  EXPECT_NE(e.find("synthetic.insertion.hit_probability"), std::string::npos) << e;
+  e = ErrorOf("synthetic:\n  corrections:\n    pull_decay_per_submap: 1.5\n");
+  EXPECT_NE(e.find("options.yaml: synthetic.corrections.pull_decay_per_submap"),
+            std::string::npos)
+      << e;
+  e = ErrorOf("synthetic:\n  tour:\n    waypoint_clearance_m: 0.1\n");
+  EXPECT_NE(e.find("options.yaml: synthetic.tour.waypoint_clearance_m"), std::string::npos) << e;
+  e = ErrorOf("synthetic:\n  lidar:\n    range_min_m: 9\n");
+  EXPECT_NE(e.find("options.yaml: synthetic.lidar.range_min_m"), std::string::npos) << e;
+  e = ErrorOf("synthetic:\n  range_filter:\n    max_range_m: 0.5\n    min_range_m: 1\n");
+  EXPECT_NE(e.find("options.yaml: synthetic.range_filter.max_range_m"), std::string::npos) << e;
+}
+
+TEST_F(ConfigTest, ZeroTurnsOffWhatTheModulesAllowToBeOff) {
+  const ScoutConfig c = Load(
+      "explore:\n  follower:\n    slow_down_distance_m: 0\n    rotate_in_place_heading_deg: 0\n"
+      "slam:\n  local:\n    real_time_correlative_scan_matcher:\n"
+      "      linear_search_window_m: 0\n");
+  EXPECT_EQ(c.explore.follower.slow_down_distance_m, 0.0);
+  EXPECT_EQ(c.explore.follower.rotate_in_place_heading_rad, 0.0);
+  EXPECT_EQ(c.slam.local.real_time_correlative_scan_matcher.linear_search_window_m, 0.0);
 }
 
 TEST_F(ConfigTest, ValuesOverrideDefaults) {

@@ -57,11 +57,12 @@ void ReadFollower(YamlSection s, explore::PathFollowerOptions* o) {
   s.ReadPositive("max_linear_speed_mps", &o->max_linear_speed_mps);
   s.ReadPositive("max_angular_speed_radps", &o->max_angular_speed_radps);
   double heading_deg = o->rotate_in_place_heading_rad / kRadPerDeg;
-  s.ReadPositive("rotate_in_place_heading_deg", &heading_deg);
+  s.ReadInRange("rotate_in_place_heading_deg", &heading_deg, 0.0, 180.0,
+                YamlSection::Bound::kInclusive, YamlSection::Bound::kInclusive);
   o->rotate_in_place_heading_rad = heading_deg * kRadPerDeg;
   s.ReadPositive("rotate_gain_per_s", &o->rotate_gain_per_s);
   s.ReadPositive("goal_tolerance_m", &o->goal_tolerance_m);
-  s.ReadPositive("slow_down_distance_m", &o->slow_down_distance_m);
+  s.ReadNonNegative("slow_down_distance_m", &o->slow_down_distance_m);
   s.ReadNonNegative("min_linear_speed_mps", &o->min_linear_speed_mps);
   s.RejectUnknownKeys();
 }

@@ -7,11 +7,32 @@ namespace {
 
 constexpr double kRadPerDeg = std::numbers::pi / 180.0;
 
+using Bound = YamlSection::Bound;
+
 // Reads 'key' (degrees) into 'radians', leaving it unchanged when absent.
 void ReadPositiveDegrees(YamlSection& s, const std::string& key, double* radians) {
   double degrees = *radians / kRadPerDeg;
   s.ReadPositive(key, &degrees);
   *radians = degrees * kRadPerDeg;
+}
+
+// A search window to either side, in degrees: at most half a turn.
+void ReadAngularWindow(YamlSection& s, const std::string& key, double* radians) {
+  double degrees = *radians / kRadPerDeg;
+  s.ReadInRange(key, &degrees, 0.0, 180.0, Bound::kInclusive, Bound::kInclusive);
+  *radians = degrees * kRadPerDeg;
+}
+
+// The probability tables' limits (grid/probability_values.h).
+void ReadGridProbability(YamlSection& s, const std::string& key, double* value) {
+  s.ReadInRange(key, value, 0.1, 0.9, Bound::kInclusive, Bound::kInclusive);
+}
+
+void ReadHitMissProbabilities(YamlSection& s, grid::RangeDataInserterOptions* o) {
+  s.ReadInRange("hit_probability", &o->hit_probability, 0.5, 1.0, Bound::kExclusive,
+                Bound::kExclusive);
+  s.ReadInRange("miss_probability", &o->miss_probability, 0.0, 0.5, Bound::kExclusive,
+                Bound::kExclusive);
 }
 
 void ReadAdaptiveVoxelFilter(YamlSection s, slam::AdaptiveVoxelFilterOptions* o) {
@@ -27,7 +48,7 @@ void ReadCeresScanMatcher(YamlSection s, slam::CeresScanMatcherOptions* o) {
   s.ReadNonNegative("rotation_weight", &o->rotation_weight);
   s.ReadInt("max_num_iterations", &o->max_num_iterations, 1);
   s.ReadInt("full_weight_num_points", &o->full_weight_num_points, 0);
-  s.ReadPositive("unknown_probability", &o->unknown_probability);
+  ReadGridProbability(s, "unknown_probability", &o->unknown_probability);
   s.RejectUnknownKeys();
 }
 
@@ -45,11 +66,11 @@ void ReadLocal(YamlSection s, slam::LocalSlamOptions* o) {
   {
     YamlSection c = s.Section("real_time_correlative_scan_matcher");
     slam::RealTimeCorrelativeScanMatcherOptions& m = o->real_time_correlative_scan_matcher;
-    c.ReadPositive("linear_search_window_m", &m.linear_search_window_m);
-    ReadPositiveDegrees(c, "angular_search_window_deg", &m.angular_search_window_rad);
+    c.ReadNonNegative("linear_search_window_m", &m.linear_search_window_m);
+    ReadAngularWindow(c, "angular_search_window_deg", &m.angular_search_window_rad);
     c.ReadNonNegative("translation_delta_cost_weight", &m.translation_delta_cost_weight);
     c.ReadNonNegative("rotation_delta_cost_weight", &m.rotation_delta_cost_weight);
-    c.ReadPositive("unknown_probability", &m.unknown_probability);
+    ReadGridProbability(c, "unknown_probability", &m.unknown_probability);
     c.RejectUnknownKeys();
   }
   ReadCeresScanMatcher(s.Section("ceres_scan_matcher"), &o->ceres_scan_matcher);
@@ -65,8 +86,7 @@ void ReadLocal(YamlSection s, slam::LocalSlamOptions* o) {
     m.ReadPositive("resolution_m", &o->submaps.resolution_m);
     m.ReadInt("num_range_data", &o->submaps.num_range_data, 1);
     m.ReadNonNegative("max_travel_m", &o->submaps.max_travel_m);
-    m.ReadPositive("hit_probability", &o->submaps.insertion.hit_probability);
-    m.ReadPositive("miss_probability", &o->submaps.insertion.miss_probability);
+    ReadHitMissProbabilities(m, &o->submaps.insertion);
     m.RejectUnknownKeys();
   }
   s.RejectUnknownKeys();
@@ -109,10 +129,10 @@ void ReadPoseGraph(YamlSection s, slam::PoseGraphOptions* o) {
     c.ReadNonNegative("loop_closure_rotation_weight", &b.loop_closure_rotation_weight);
     {
       YamlSection f = c.Section("fast_correlative_scan_matcher");
-      f.ReadPositive("linear_search_window_m",
-                     &b.fast_correlative_scan_matcher.linear_search_window_m);
-      ReadPositiveDegrees(f, "angular_search_window_deg",
-                          &b.fast_correlative_scan_matcher.angular_search_window_rad);
+      f.ReadNonNegative("linear_search_window_m",
+                        &b.fast_correlative_scan_matcher.linear_search_window_m);
+      ReadAngularWindow(f, "angular_search_window_deg",
+                        &b.fast_correlative_scan_matcher.angular_search_window_rad);
       f.ReadInt("branch_and_bound_depth", &b.fast_correlative_scan_matcher.branch_and_bound_depth,
                 1);
       f.ReadNonNegative("ambiguity_radius_m", &b.fast_correlative_scan_matcher.ambiguity_radius_m);

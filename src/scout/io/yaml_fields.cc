@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 #include "scout/common/error.h"
 
@@ -12,6 +13,22 @@ YamlSection::YamlSection(const YAML::Node& node, std::string file, std::string p
   if (node_ && !node_.IsNull() && !node_.IsMap()) {
     throw InputError(file_ + ": '" + (prefix_.empty() ? std::string("(top level)") : prefix_) +
                      "': expected a mapping of option names to values");
+  }
+  if (!node_ || !node_.IsMap()) return;
+  // Take() reads the first of repeated keys: a second one would pass silently.
+  std::vector<std::string> keys;
+  for (const auto& kv : node_) {
+    const std::string where = prefix_.empty() ? std::string("(top level)") : prefix_;
+    if (!kv.first.IsScalar()) {
+      throw InputError(file_ + ":" + std::to_string(kv.first.Mark().line + 1) + ": '" + where +
+                       "': expected option names as keys, got '" + YAML::Dump(kv.first) + "'");
+    }
+    const std::string key = kv.first.Scalar();
+    if (std::find(keys.begin(), keys.end(), key) != keys.end()) {
+      throw InputError(file_ + ":" + std::to_string(kv.first.Mark().line + 1) + ": option '" +
+                       Name(key) + "' given twice");
+    }
+    keys.push_back(key);
   }
 }
 
@@ -56,6 +73,22 @@ void YamlSection::ReadNonNegative(const std::string& key, double* value) {
   if (v < 0.0) {
     throw InputError(file_ + ": '" + Name(key) + "': expected a number >= 0, got " +
                      std::to_string(v));
+  }
+  *value = v;
+}
+
+void YamlSection::ReadInRange(const std::string& key, double* value, double min, double max,
+                              Bound min_bound, Bound max_bound) {
+  double v = *value;
+  ReadDouble(key, &v);
+  const bool above = min_bound == Bound::kInclusive ? v >= min : v > min;
+  const bool below = max_bound == Bound::kInclusive ? v <= max : v < max;
+  if (!above || !below) {
+    std::ostringstream expected;
+    expected << (min_bound == Bound::kInclusive ? "[" : "(") << min << ", " << max
+             << (max_bound == Bound::kInclusive ? "]" : ")");
+    throw InputError(file_ + ": '" + Name(key) + "': expected a number in " + expected.str() +
+                     ", got " + std::to_string(v));
   }
   *value = v;
 }
@@ -125,7 +158,7 @@ YamlSection YamlSection::Section(const std::string& key) {
 void YamlSection::RejectUnknownKeys() const {
   if (!node_ || !node_.IsMap()) return;
   for (const auto& kv : node_) {
-    const std::string key = kv.first.as<std::string>();
+    const std::string key = kv.first.Scalar();
     if (std::find(seen_.begin(), seen_.end(), key) == seen_.end()) {
       std::string known;
       for (const std::string& s : seen_) known += (known.empty() ? "" : ", ") + s;

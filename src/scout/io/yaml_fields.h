@@ -14,7 +14,10 @@ namespace scout::io {
 // not asked for, so a misspelt option never passes silently.
 class YamlSection {
  public:
-  // 'node' must be a mapping (or absent/null: then nothing is read).
+  enum class Bound { kInclusive, kExclusive };
+
+  // 'node' must be a mapping (or absent/null: then nothing is read) whose
+  // keys are scalars, none given twice.
   YamlSection(const YAML::Node& node, std::string file, std::string prefix);
 
   // Each Read* leaves 'value' unchanged when the key is absent. Throws
@@ -22,6 +25,9 @@ class YamlSection {
   void ReadDouble(const std::string& key, double* value);
   void ReadPositive(const std::string& key, double* value);
   void ReadNonNegative(const std::string& key, double* value);
+  // A finite number in [min, max], (min, max), [min, max) or (min, max].
+  void ReadInRange(const std::string& key, double* value, double min, double max, Bound min_bound,
+                   Bound max_bound);
   void ReadInt(const std::string& key, int* value, int min_value);
   void ReadBool(const std::string& key, bool* value);
   // A sequence of [x, y] pairs of finite numbers (an empty sequence clears

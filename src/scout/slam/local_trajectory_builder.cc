@@ -10,7 +10,7 @@ namespace {
 
 void CheckOption(bool ok, const std::string& name, double value, const char* expected) {
   if (!ok) {
-    throw std::invalid_argument("local_slam." + name + " must be " + expected + ", got " +
+    throw std::invalid_argument("slam.local." + name + " must be " + expected + ", got " +
                                 std::to_string(value));
   }
 }

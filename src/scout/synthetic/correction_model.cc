@@ -20,7 +20,9 @@ void Require(bool ok, const std::string& key, double value, const std::string& e
   }
 }
 
-const CorrectionModelOptions& Validated(const CorrectionModelOptions& o) {
+}  // namespace
+
+void Validate(const CorrectionModelOptions& o) {
   Require(o.drift_translation_m_per_sqrt_m >= 0.0, "drift_translation_m_per_sqrt_m",
           o.drift_translation_m_per_sqrt_m, ">= 0");
   Require(o.drift_heading_rad_per_sqrt_m >= 0.0, "drift_heading_rad_per_sqrt_m",
@@ -46,6 +48,12 @@ const CorrectionModelOptions& Validated(const CorrectionModelOptions& o) {
           ">= 0");
   Require(o.loop_closure_sample_spacing_m >= 0.0, "loop_closure_sample_spacing_m",
           o.loop_closure_sample_spacing_m, ">= 0");
+}
+
+namespace {
+
+const CorrectionModelOptions& Validated(const CorrectionModelOptions& o) {
+  Validate(o);
   return o;
 }
 

@@ -89,6 +89,9 @@ struct CorrectionModelOptions {
 };
 
 // The pose estimates of a synthetic submap SLAM, given the true poses.
+// Throws InputError naming the first bad option ("corrections.<key>").
+void Validate(const CorrectionModelOptions& options);
+
 class CorrectionModel {
  public:
   // Throws InputError naming the option if 'options' is invalid.

@@ -24,17 +24,6 @@ void Require(bool ok, const std::string& key, double value, const std::string& e
   }
 }
 
-void Validate(const SyntheticStreamOptions& o) {
-  Require(o.resolution_m > 0.0, "resolution_m", o.resolution_m, "> 0");
-  Require(o.scans_per_submap >= 1, "scans_per_submap", o.scans_per_submap, ">= 1");
-  Require(o.scan_spacing_m > 0.0, "scan_spacing_m", o.scan_spacing_m, "> 0");
-  Require(o.scan_spacing_rad > 0.0, "scan_spacing_rad", o.scan_spacing_rad, "> 0");
-  Require(o.linear_speed_mps > 0.0, "linear_speed_mps", o.linear_speed_mps, "> 0");
-  Require(o.angular_speed_radps > 0.0, "angular_speed_radps", o.angular_speed_radps, "> 0");
-  Require(o.optimize_every_n_scans >= 1, "optimize_every_n_scans", o.optimize_every_n_scans,
-          ">= 1");
-  Require(o.max_scans >= 0, "max_scans", o.max_scans, ">= 0");
-}
 
 // A submap receiving scans.
 struct ActiveSubmap {
@@ -55,11 +44,40 @@ std::vector<Eigen::Vector2d> Transformed(const Rigid2d& transform,
 
 }  // namespace
 
+void Validate(const SyntheticStreamOptions& o) {
+  Require(o.resolution_m > 0.0, "resolution_m", o.resolution_m, "> 0");
+  Require(o.scans_per_submap >= 1, "scans_per_submap", o.scans_per_submap, ">= 1");
+  Require(o.scan_spacing_m > 0.0, "scan_spacing_m", o.scan_spacing_m, "> 0");
+  Require(o.scan_spacing_rad > 0.0, "scan_spacing_rad", o.scan_spacing_rad, "> 0");
+  Require(o.linear_speed_mps > 0.0, "linear_speed_mps", o.linear_speed_mps, "> 0");
+  Require(o.angular_speed_radps > 0.0, "angular_speed_radps", o.angular_speed_radps, "> 0");
+  Require(o.optimize_every_n_scans >= 1, "optimize_every_n_scans", o.optimize_every_n_scans,
+          ">= 1");
+  Require(o.max_scans >= 0, "max_scans", o.max_scans, ">= 0");
+  Require(o.insertion.hit_probability > 0.5 && o.insertion.hit_probability < 1.0,
+          "insertion.hit_probability", o.insertion.hit_probability, "in (0.5, 1)");
+  Require(o.insertion.miss_probability > 0.0 && o.insertion.miss_probability < 0.5,
+          "insertion.miss_probability", o.insertion.miss_probability, "in (0, 0.5)");
+  Require(o.range_filter.min_range_m >= 0.0, "range_filter.min_range_m",
+          o.range_filter.min_range_m, ">= 0");
+  Require(o.range_filter.max_range_m > o.range_filter.min_range_m, "range_filter.max_range_m",
+          o.range_filter.max_range_m, "> range_filter.min_range_m");
+  Require(o.range_filter.miss_ray_length_m >= 0.0, "range_filter.miss_ray_length_m",
+          o.range_filter.miss_ray_length_m, ">= 0");
+  // The parts' own checks name their keys relative to their part.
+  try {
+    Validate(o.tour);
+    Validate(o.corrections);
+    sim::Lidar{o.lidar};
+  } catch (const InputError& e) {
+    throw InputError(std::string("synthetic.") + e.what());
+  }
+}
+
 SyntheticEventStream::SyntheticEventStream(const sim::World& world,
                                            const SyntheticStreamOptions& options, uint64_t seed)
     : world_(world), options_(options), seed_(seed) {
   Validate(options_);
-  sim::Lidar{options_.lidar};  // validates the lidar options now rather than in Run
 }
 
 StreamStats SyntheticEventStream::Run(const std::function<void(const events::SubmapEvent&)>& sink) {

@@ -47,6 +47,10 @@ struct SyntheticStreamOptions {
   int max_scans = 0;
 };
 
+// Throws InputError naming the first bad option ("synthetic.<key>"), the
+// tour's, corrections', lidar's and insertion's included.
+void Validate(const SyntheticStreamOptions& options);
+
 struct StreamStats {
   int scans = 0;
   int submaps = 0;

@@ -21,17 +21,6 @@ void Require(bool ok, const std::string& key, double value, const std::string& e
   }
 }
 
-void Validate(const TourOptions& o) {
-  Require(o.path_clearance_m >= 0.0, "path_clearance_m", o.path_clearance_m, ">= 0");
-  Require(o.waypoint_clearance_m >= o.path_clearance_m, "waypoint_clearance_m",
-          o.waypoint_clearance_m, ">= path_clearance_m");
-  Require(o.waypoint_spacing_m > 0.0, "waypoint_spacing_m", o.waypoint_spacing_m, "> 0");
-  Require(o.max_shortcut_m > 0.0, "max_shortcut_m", o.max_shortcut_m, "> 0");
-  Require(o.smoothing_spacing_m > 0.0, "smoothing_spacing_m", o.smoothing_spacing_m, "> 0");
-  Require(o.smoothing_iterations >= 0, "smoothing_iterations", o.smoothing_iterations, ">= 0");
-  Require(o.min_pose_clearance_m >= 0.0 && o.min_pose_clearance_m <= o.path_clearance_m,
-          "min_pose_clearance_m", o.min_pose_clearance_m, "in [0, path_clearance_m]");
-}
 
 // Returns the traversable cell nearest to 'source' (breadth-first over free
 // cells, 8-connected), or -1.
@@ -84,6 +73,18 @@ std::vector<Eigen::Vector2d> SmoothLeg(const std::vector<int64_t>& cells, const 
 }
 
 }  // namespace
+
+void Validate(const TourOptions& o) {
+  Require(o.path_clearance_m >= 0.0, "path_clearance_m", o.path_clearance_m, ">= 0");
+  Require(o.waypoint_clearance_m >= o.path_clearance_m, "waypoint_clearance_m",
+          o.waypoint_clearance_m, ">= path_clearance_m");
+  Require(o.waypoint_spacing_m > 0.0, "waypoint_spacing_m", o.waypoint_spacing_m, "> 0");
+  Require(o.max_shortcut_m > 0.0, "max_shortcut_m", o.max_shortcut_m, "> 0");
+  Require(o.smoothing_spacing_m > 0.0, "smoothing_spacing_m", o.smoothing_spacing_m, "> 0");
+  Require(o.smoothing_iterations >= 0, "smoothing_iterations", o.smoothing_iterations, ">= 0");
+  Require(o.min_pose_clearance_m >= 0.0 && o.min_pose_clearance_m <= o.path_clearance_m,
+          "min_pose_clearance_m", o.min_pose_clearance_m, "in [0, path_clearance_m]");
+}
 
 std::vector<Eigen::Vector2d> PlanTour(const sim::World& world, const TourOptions& o) {
   Validate(o);

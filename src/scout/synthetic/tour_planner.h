@@ -39,6 +39,9 @@ struct TourOptions {
 // nearest cell with path clearance). Consecutive points may reverse direction
 // (the robot turns on the spot at waypoints). Throws InputError if no free
 // space with path clearance is reachable from the start.
+// Throws InputError naming the first bad option ("tour.<key>").
+void Validate(const TourOptions& options);
+
 std::vector<Eigen::Vector2d> PlanTour(const sim::World& world, const TourOptions& options);
 
 }  // namespace scout::synthetic
