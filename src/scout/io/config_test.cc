@@ -138,8 +138,7 @@ TEST_F(ConfigTest, SyntheticOptionsAreCheckedWhenTheFileLoads) {
   std::string e = ErrorOf("synthetic:\n  insertion:\n    hit_probability: 0.3\n");
   EXPECT_NE(e.find("synthetic.insertion.hit_probability"), std::string::npos) << e;
   e = ErrorOf("synthetic:\n  corrections:\n    pull_decay_per_submap: 1.5\n");
-  EXPECT_NE(e.find("options.yaml: synthetic.corrections.pull_decay_per_submap"),
-            std::string::npos)
+  EXPECT_NE(e.find("options.yaml: synthetic.corrections.pull_decay_per_submap"), std::string::npos)
       << e;
   e = ErrorOf("synthetic:\n  tour:\n    waypoint_clearance_m: 0.1\n");
   EXPECT_NE(e.find("options.yaml: synthetic.tour.waypoint_clearance_m"), std::string::npos) << e;

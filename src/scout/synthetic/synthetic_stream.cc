@@ -24,7 +24,6 @@ void Require(bool ok, const std::string& key, double value, const std::string& e
   }
 }
 
-
 // A submap receiving scans.
 struct ActiveSubmap {
   int id = 0;
@@ -58,8 +57,8 @@ void Validate(const SyntheticStreamOptions& o) {
           "insertion.hit_probability", o.insertion.hit_probability, "in (0.5, 1)");
   Require(o.insertion.miss_probability > 0.0 && o.insertion.miss_probability < 0.5,
           "insertion.miss_probability", o.insertion.miss_probability, "in (0, 0.5)");
-  Require(o.range_filter.min_range_m >= 0.0, "range_filter.min_range_m",
-          o.range_filter.min_range_m, ">= 0");
+  Require(o.range_filter.min_range_m >= 0.0, "range_filter.min_range_m", o.range_filter.min_range_m,
+          ">= 0");
   Require(o.range_filter.max_range_m > o.range_filter.min_range_m, "range_filter.max_range_m",
           o.range_filter.max_range_m, "> range_filter.min_range_m");
   Require(o.range_filter.miss_ray_length_m >= 0.0, "range_filter.miss_ray_length_m",

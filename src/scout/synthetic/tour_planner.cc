@@ -21,7 +21,6 @@ void Require(bool ok, const std::string& key, double value, const std::string& e
   }
 }
 
-
 // Returns the traversable cell nearest to 'source' (breadth-first over free
 // cells, 8-connected), or -1.
 int64_t NearestTraversable(const grid::OccupancyMap& map, const GridSearch& search,
