@@ -62,14 +62,20 @@ TEST_F(ScoutCli, BadCommandLineExitsWithTwo) {
   EXPECT_EQ(RunScout("frontier-bench --seed notanumber").exit_code, 2);
 }
 
-TEST_F(ScoutCli, NegativeSeedIsAnErrorNotAWrappedNumber) {
+TEST_F(ScoutCli, NegativeOrTooLargeSeedIsAnErrorNotAWrappedNumber) {
   const std::string o = " --out " + (dir_ / "out").string();
   for (const std::string command : {"frontier-bench", "explore", "replay no-such.log"}) {
-    const Result r = RunScout(command + " --seed -3" + o);
-    EXPECT_EQ(r.exit_code, 2) << command;
-    EXPECT_NE(r.output.find("--seed"), std::string::npos) << command << ": " << r.output;
-    EXPECT_NE(r.output.find("expected a non-negative integer, got '-3'"), std::string::npos)
-        << command << ": " << r.output;
+    // 2^64 + 1 would be clamped to 2^64 - 1 without the check.
+    for (const std::string seed : {"-3", "18446744073709551617"}) {
+      const Result r = RunScout(command + " --seed " + seed + o);
+      EXPECT_EQ(r.exit_code, 2) << command;
+      EXPECT_NE(r.output.find("--seed"), std::string::npos) << command << ": " << r.output;
+      EXPECT_NE(r.output.find("expected a non-negative integer (at most 18446744073709551615), "
+                              "got '" +
+                              seed + "'"),
+                std::string::npos)
+          << command << ": " << r.output;
+    }
   }
   EXPECT_FALSE(fs::exists(dir_ / "out"));
 }
@@ -115,8 +121,8 @@ TEST_F(ScoutCli, FrontierBenchWritesConsistentOutputs) {
   std::vector<std::string> names;
   for (const auto& e : fs::directory_iterator(out)) names.push_back(e.path().filename());
   std::sort(names.begin(), names.end());
-  EXPECT_EQ(names, (std::vector<std::string>{"figures", "frontier.csv", "frontiers.png",
-                                             "report.html", "summary.json"}));
+  EXPECT_EQ(names, (std::vector<std::string>{".scout-outputs", "figures", "frontier.csv",
+                                             "frontiers.png", "report.html", "summary.json"}));
   EXPECT_TRUE(fs::exists(out / "figures" / "queried_points.svg"));
   const nlohmann::json summary = ReadSummary(out);
   EXPECT_GT(summary["submaps"].get<int>(), 1);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <iomanip>
@@ -12,12 +13,19 @@
 
 namespace scout::apps {
 
-CLI::Validator NonNegativeInteger() {
+CLI::Validator NonNegativeInteger(uint64_t max) {
   return CLI::Validator(
-      [](std::string& value) -> std::string {
+      [max](std::string& value) -> std::string {
         const bool digits =
             !value.empty() && value.find_first_not_of("0123456789") == std::string::npos;
-        return digits ? std::string() : "expected a non-negative integer, got '" + value + "'";
+        uint64_t parsed = 0;
+        const auto [end, error] =
+            std::from_chars(value.data(), value.data() + value.size(), parsed);
+        if (digits && error == std::errc() && end == value.data() + value.size() && parsed <= max) {
+          return std::string();
+        }
+        return "expected a non-negative integer (at most " + std::to_string(max) + "), got '" +
+               value + "'";
       },
       "NONNEGATIVE");
 }
@@ -26,16 +34,22 @@ io::ScoutConfig LoadConfigOrDefaults(const std::string& config_file) {
   return config_file.empty() ? io::ScoutConfig{} : io::LoadConfig(config_file);
 }
 
-CLI::Validator NonNegativeFiniteNumber() {
+CLI::Validator NonNegativeFiniteNumber(double max) {
   return CLI::Validator(
-      [](std::string& value) -> std::string {
+      [max](std::string& value) -> std::string {
         const char* begin = value.c_str();
         char* end = nullptr;
         errno = 0;
         const double x = std::strtod(begin, &end);
         const bool ok = !value.empty() && end == begin + value.size() && errno == 0 &&
-                        std::isfinite(x) && x >= 0.0;
-        return ok ? std::string() : "expected a finite number >= 0, got '" + value + "'";
+                        std::isfinite(x) && x >= 0.0 && x <= max;
+        if (ok) return std::string();
+        if (max < std::numeric_limits<double>::max()) {
+          std::ostringstream range;
+          range << "expected a number from 0 to " << max << ", got '" << value << "'";
+          return range.str();
+        }
+        return "expected a finite number >= 0, got '" + value + "'";
       },
       "NONNEGATIVE");
 }

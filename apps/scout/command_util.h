@@ -2,6 +2,8 @@
 #define SCOUT_APPS_SCOUT_COMMAND_UTIL_H_
 
 #include <CLI/CLI.hpp>
+#include <cstdint>
+#include <limits>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -15,13 +17,15 @@ namespace scout::apps {
 // empty. Throws InputError for a bad file (see io::LoadConfig).
 io::ScoutConfig LoadConfigOrDefaults(const std::string& config_file);
 
-// Accepts decimal digits only. CLI11 parses "-3" into an unsigned seed as
-// 2^64 - 3 without complaint; a seed the user mistyped must be an error.
-CLI::Validator NonNegativeInteger();
+// Accepts decimal digits only, of a value at most 'max'. CLI11 parses "-3"
+// into an unsigned seed as 2^64 - 3, and 2^64 + 1 as 2^64 - 1, without
+// complaint; a seed the user mistyped must be an error.
+CLI::Validator NonNegativeInteger(uint64_t max = std::numeric_limits<uint64_t>::max());
 
-// Accepts a finite decimal number >= 0. CLI::NonNegativeNumber lets "nan"
-// through (no comparison with NaN fails) and prints its range as 0 to DBL_MAX.
-CLI::Validator NonNegativeFiniteNumber();
+// Accepts a finite decimal number in [0, max]. CLI::NonNegativeNumber lets
+// "nan" through (no comparison with NaN fails) and prints its range as 0 to
+// DBL_MAX.
+CLI::Validator NonNegativeFiniteNumber(double max = std::numeric_limits<double>::max());
 
 // Splits a comma-separated list, dropping empty items.
 std::vector<std::string> SplitList(const std::string& list);

@@ -73,6 +73,12 @@ TEST_F(ExploreCli, BadInputsNameWhatIsWrongAndLeaveNoOutputs) {
   r = RunScout("explore --start 1:2" + rooms + o);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find("expected X,Y"), std::string::npos) << r.output;
+  r = RunScout("explore --start ''" + rooms + o);  // given, but empty: not the default start
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("expected X,Y"), std::string::npos) << r.output;
+  r = RunScout("explore --start 500,500" + rooms + o);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("is outside the map, which spans"), std::string::npos) << r.output;
   r = RunScout("explore --world " + (dir_ / "narrow.yaml").string() + o);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find("no free space is reachable"), std::string::npos) << r.output;

@@ -36,8 +36,10 @@ Eigen::Vector2d ParseStart(const std::string& text) {
   std::istringstream in(text);
   double x = 0.0, y = 0.0;
   char comma = 0;
-  if (!(in >> x >> comma >> y) || comma != ',' || !(in >> std::ws).eof() || !std::isfinite(x) ||
-      !std::isfinite(y)) {
+  // Beyond 1000 km no map reaches (and the number would fill the message).
+  constexpr double kMaxStartM = 1e6;
+  if (!(in >> x >> comma >> y) || comma != ',' || !(in >> std::ws).eof() ||
+      !(std::abs(x) <= kMaxStartM) || !(std::abs(y) <= kMaxStartM)) {
     throw InputError("--start '" + text + "': expected X,Y in metres, e.g. --start 2.5,-1");
   }
   return {x, y};
@@ -58,7 +60,7 @@ exploration::ExplorationOptions MakeOptions(const ExploreArgs& args) {
     }
     o.explore.max_sim_time_s = *args.max_sim_time_s;
   }
-  if (!args.start.empty()) o.start = ParseStart(args.start);
+  if (args.start) o.start = ParseStart(*args.start);
   exploration::CheckExplorationOptions(o);
   return o;
 }

@@ -17,7 +17,7 @@ struct ExploreArgs {
   std::string strategy = "exact";
   std::string goals = "scout";
   std::optional<double> max_sim_time_s;
-  std::string start;  // "X,Y", empty: the world's own start
+  std::optional<std::string> start;  // "X,Y"; absent: the world's own start
   bool quiet = false;
   bool record_log = false;  // also write sensor.log (CARMEN) for `scout replay`
 };

@@ -201,8 +201,9 @@ TEST_F(ReplayCli, BadInputIsAClearErrorWithoutPartialOutputs) {
   EXPECT_FALSE(fs::exists(out / "summary.json"));
 
   // Out of range, not a number, or one that no comparison rejects (NaN).
-  for (const std::string bad : {"--odom-noise -1", "--odom-noise nan", "--odom-noise inf",
-                                "--odom-noise 0.5x", "--max-scans 1.5", "--max-scans -2"}) {
+  for (const std::string bad :
+       {"--odom-noise -1", "--odom-noise nan", "--odom-noise inf", "--odom-noise 0.5x",
+        "--odom-noise 1e300", "--max-scans 1.5", "--max-scans -2", "--max-scans 3000000000"}) {
     r = RunScout("replay " + Log() + " " + bad + " --out " + out.string());
     EXPECT_EQ(r.exit_code, 2) << bad << ": " << r.output;
     EXPECT_NE(r.output.find(bad.substr(0, bad.find(' ')) + ": expected"), std::string::npos)
@@ -228,6 +229,40 @@ TEST_F(ReplayCli, BadInputIsAClearErrorWithoutPartialOutputs) {
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("far.tum"), std::string::npos) << r.output;
   EXPECT_FALSE(fs::exists(out / "summary.json"));
+  // A TUM reference whose first pose is broken is still read as TUM, and the
+  // line is named (it was taken for a CARMEN log without scans).
+  std::ofstream(Dir() / "nan.tum") << "# stamp x y z qx qy qz qw\n100.0 nan 0 0 0 0 0 1\n";
+  r = RunScout("replay " + Log() + " --reference " + (Dir() / "nan.tum").string() + " --out " +
+               out.string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("nan.tum:2"), std::string::npos) << r.output;
+  // A directory where a file belongs.
+  r = RunScout("replay " + Log() + " --config " + Dir().string() + " --out " + out.string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find(Dir().string() + ": is a directory; expected an options file"),
+            std::string::npos)
+      << r.output;
+  // Scans whose every range is unusable (negative) map nothing.
+  std::ofstream(Dir() / "negative.log")
+      << "FLASER 3 -1 -1 -1 0 0 0 0 0 0 1.0 h 1.0\nFLASER 3 -1 -1 -1 0 0 0 0 0 0 2.0 h 2.0\n";
+  r = RunScout("replay " + (Dir() / "negative.log").string() + " --out " + out.string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("negative.log: none of the 2 scans could be inserted"), std::string::npos)
+      << r.output;
+  EXPECT_FALSE(fs::exists(out / "summary.json"));
+}
+
+TEST_F(ReplayCli, ARunIntoAUsedDirectoryLeavesNoEarlierOutputBehind) {
+  const fs::path out = Dir() / "reused";
+  const std::string replay = "replay " + Log() + " --quiet --synchronous --max-scans 40 ";
+  ASSERT_EQ(RunScout(replay + "--reference " + Log() + " --out " + out.string()).exit_code, 0);
+  ASSERT_TRUE(fs::exists(out / "reference.tum"));
+  std::ofstream(out / "notes.txt") << "mine\n";
+  ASSERT_EQ(RunScout(replay + "--out " + out.string()).exit_code, 0);
+  // The new summary has no reference section, so no reference.tum beside it.
+  EXPECT_FALSE(fs::exists(out / "reference.tum"));
+  EXPECT_TRUE(fs::exists(out / "trajectory.tum"));
+  EXPECT_TRUE(fs::exists(out / "notes.txt"));
 }
 
 }  // namespace

@@ -157,15 +157,15 @@ CLI::App* AddReplayCommand(CLI::App& app, ReplayArgs* args) {
   cmd->add_option("--odom-topic", args->odometry_topic, "bags: Odometry topic (default: detected)");
   cmd->add_option("--odom-noise", args->odom_noise,
                   "scale of the wheel-odometry drift injected into the dataset's odometry (0 = "
-                  "none, 1 = typical)")
+                  "none, 1 = typical, at most 100)")
       ->capture_default_str()
-      ->check(NonNegativeFiniteNumber());
+      ->check(NonNegativeFiniteNumber(100.0));
   cmd->add_option("--seed", args->seed, "seed of the injected odometry noise")
       ->capture_default_str()
       ->check(NonNegativeInteger());
   cmd->add_option("--max-scans", args->max_scans, "stop after this many scans (0 = all)")
       ->capture_default_str()
-      ->check(NonNegativeInteger());
+      ->check(NonNegativeInteger(std::numeric_limits<int>::max()));
   cmd->add_flag("--synchronous", args->synchronous,
                 "run global SLAM in the calling thread (deterministic; overrides the config)");
   cmd->add_flag("--quiet", args->quiet, "print only the final summary");
@@ -239,6 +239,13 @@ int RunReplay(const ReplayArgs& args) {
   const double wall_time_s = wall.ElapsedUs() * 1e-6;
 
   const std::vector<slam::TimedPose> nodes = builder.GetTrajectory();
+  if (nodes.empty()) {
+    // Every scan was dropped by the range filter (no return and no miss), or
+    // had no pose to insert it at: there is nothing to map.
+    throw InputError(args.dataset + ": none of the " + std::to_string(num_scans) +
+                     " scans could be inserted (expected ranges between the scan's range_min and "
+                     "range_max, or readings beyond range_max with odometry to place them)");
+  }
   std::vector<io::StampedPose> trajectory;
   trajectory.reserve(nodes.size());
   for (const slam::TimedPose& n : nodes) trajectory.push_back({n.time_s, n.pose});

@@ -26,7 +26,7 @@ void StageRunReport(const std::filesystem::path& inputs, io::OutputDirectory& ou
 int RunReport(const ReportArgs& args) {
   // Read everything before creating anything, so a bad directory is left alone.
   const std::vector<report::ReportFile> files = report::BuildRunReport(args.dir);
-  io::OutputDirectory out(args.dir);
+  io::OutputDirectory out(args.dir, io::OutputDirectory::Mode::kAddFiles);
   for (const report::ReportFile& file : files) {
     WriteTextFileAtomically(out.Stage(file.name), file.content);
   }

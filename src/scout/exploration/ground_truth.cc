@@ -105,6 +105,14 @@ GroundTruth::GroundTruth(const grid::OccupancyMap& world, const std::string& wor
   bare_options.unknown_traversable = false;
   const explore::PlanningMap bare(world, bare_options);
   const grid::CellIndex start_cell = limits_.CellContaining(start);
+  if (!limits_.Contains(start_cell)) {
+    const Eigen::Vector2d low = limits_.origin();
+    const Eigen::Vector2d high =
+        low + limits_.resolution() * Eigen::Vector2d(limits_.width(), limits_.height());
+    throw InputError("world '" + world_name + "': the start (" + Format(start) +
+                     ") is outside the map, which spans " + Format(low) + " to " + Format(high) +
+                     "; choose a free position with --start X,Y");
+  }
   // The planning grid inflates only occupied cells: a start beside unknown
   // cells passes it, yet the simulator's robot collides with those too.
   if (!bare.Traversable(start_cell) ||

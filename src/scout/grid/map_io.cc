@@ -139,6 +139,10 @@ Eigen::Vector2d ReadOrigin(const MapYaml& yaml) {
   if (!node.IsSequence() || node.size() != 3) yaml.FieldError("origin", node, expected);
   const double x = yaml.Number("origin", node[0], expected);
   const double y = yaml.Number("origin", node[1], expected);
+  // Beyond 1000 km the grid's cell arithmetic loses the map.
+  constexpr double kMaxOriginM = 1e6;
+  if (std::abs(x) > kMaxOriginM) yaml.FieldError("origin", node[0], "x within +-1e6 m");
+  if (std::abs(y) > kMaxOriginM) yaml.FieldError("origin", node[1], "y within +-1e6 m");
   const double yaw = yaml.Number("origin", node[2], expected);
   // A rotated map would need resampling onto Scout's axis-aligned grid.
   if (std::abs(yaw) > kYawTolerance) {
@@ -193,10 +197,13 @@ OccupancyMap ReadMapServerMap(const std::filesystem::path& yaml_path) {
   try {
     const MapYaml yaml(yaml_path);
     const std::string image_name = yaml.String("image", true, "an image file name");
-    const std::string positive = "a positive number";
+    // Metres per pixel; a building map coarser than 10 m per pixel is a typo.
+    const std::string positive = "a positive number of metres per pixel, at most 10";
     const YAML::Node resolution_node = yaml.Field("resolution", true, positive);
     const double resolution = yaml.Number("resolution", resolution_node, positive);
-    if (resolution <= 0.0) yaml.FieldError("resolution", resolution_node, positive);
+    if (resolution <= 0.0 || resolution > 10.0) {
+      yaml.FieldError("resolution", resolution_node, positive);
+    }
     const Eigen::Vector2d origin = ReadOrigin(yaml);
     const bool negate = ReadNegate(yaml);
     const double occupied_thresh = yaml.Probability("occupied_thresh", kDefaultOccupiedThresh);

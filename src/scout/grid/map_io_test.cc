@@ -166,6 +166,8 @@ TEST(MapIo, BadInputsNameTheFileAndField) {
   expect("image: ok.pgm\nresolution: 0\norigin: [0, 0, 0]\n", {"'resolution'", "positive"});
   expect("image: ok.pgm\nresolution: -0.05\norigin: [0, 0, 0]\n", {"'resolution'", "'-0.05'"});
   expect("image: ok.pgm\nresolution: fine\norigin: [0, 0, 0]\n", {"'resolution'", "'fine'"});
+  expect("image: ok.pgm\nresolution: 1e9\norigin: [0, 0, 0]\n", {"'resolution'", "at most 10"});
+  expect("image: ok.pgm\nresolution: 0.05\norigin: [1e300, 0, 0]\n", {"'origin'", "1e6"});
   expect("image: ok.pgm\nresolution: 0.05\norigin: [0, zero, 0]\n", {"'origin'", "'zero'"});
   expect("image: ok.pgm\nresolution: 0.05\norigin: [0, 0]\n", {"'origin'", "[x, y, yaw]"});
   expect("image: ok.pgm\nresolution: 0.05\norigin: [0, 0, 0.5]\n", {"'origin'", "yaw", "0.5"});

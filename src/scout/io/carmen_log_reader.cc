@@ -38,6 +38,12 @@ std::vector<std::string_view> SplitFields(std::string_view line) {
   return fields;
 }
 
+// Coordinates (m), angles (rad) and scan parameters beyond this are corrupt:
+// 1000 km.
+constexpr double kMaxCoordinate = 1e6;
+// Times (s) beyond this are corrupt: about the year 5100 in Unix time.
+constexpr double kMaxTimeS = 1e11;
+
 // Parses all of 'text' as a number ("nan" and "inf" included).
 std::optional<double> ParseNumber(std::string_view text) {
   double value = 0.0;
@@ -121,7 +127,7 @@ class CarmenParser {
                                    {*n + 5, &odom_x},
                                    {*n + 6, &odom_y},
                                    {*n + 7, &odom_theta},
-                                   {*n + 8, &time}})) {
+                                   {*n + 8, &time, kMaxTimeS}})) {
       return problem;
     }
     const std::size_t steps = *n % 2 == 1 ? *n - 1 : *n;
@@ -163,8 +169,9 @@ class CarmenParser {
     }
     const std::size_t tail = *n + *m + 10;  // first field after the remissions
     double x, y, theta, time;
-    if (auto problem =
-            Numbers(f, {{tail + 3, &x}, {tail + 4, &y}, {tail + 5, &theta}, {tail + 11, &time}})) {
+    if (auto problem = Numbers(
+            f,
+            {{tail + 3, &x}, {tail + 4, &y}, {tail + 5, &theta}, {tail + 11, &time, kMaxTimeS}})) {
       return problem;
     }
     scan.time_s = time;
@@ -185,7 +192,9 @@ class CarmenParser {
              std::to_string(f.size());
     }
     double x, y, theta, time;
-    if (auto problem = Numbers(f, {{1, &x}, {2, &y}, {3, &theta}, {7, &time}})) return problem;
+    if (auto problem = Numbers(f, {{1, &x}, {2, &y}, {3, &theta}, {7, &time, kMaxTimeS}})) {
+      return problem;
+    }
     if (!dataset_->odometry.empty() && time < dataset_->odometry.back().time_s) {
       ++counts_->backwards_odometry;
       warnings_.Add("odometry messages with backwards time",
@@ -200,18 +209,31 @@ class CarmenParser {
     return std::nullopt;
   }
 
-  // Parses the fields at the given indices as finite numbers (the ranges are
-  // parsed separately because they may be NaN or infinite).
-  std::optional<std::string> Numbers(
-      const std::vector<std::string_view>& f,
-      std::initializer_list<std::pair<std::size_t, double*>> wanted) {
-    for (const auto& [index, value] : wanted) {
-      const std::optional<double> parsed = ParseNumber(f[index]);
+  // A field to parse: its index, where the number goes, and the largest
+  // magnitude it may have (a pose 1e12 m out would make a submap grow without
+  // bound; a time of 1e300 s would put every later scan "backwards").
+  struct Field {
+    std::size_t index;
+    double* value;
+    double max_magnitude = kMaxCoordinate;
+  };
+
+  // Parses the fields at the given indices as finite numbers within their
+  // bounds (the ranges are parsed separately because they may be NaN or
+  // infinite).
+  std::optional<std::string> Numbers(const std::vector<std::string_view>& f,
+                                     std::initializer_list<Field> wanted) {
+    for (const Field& field : wanted) {
+      const std::optional<double> parsed = ParseNumber(f[field.index]);
       if (!parsed || !std::isfinite(*parsed)) {
-        return "expected a finite number as field " + std::to_string(index + 1) + ", found '" +
-               std::string(f[index]) + "'";
+        return "expected a finite number as field " + std::to_string(field.index + 1) +
+               ", found '" + std::string(f[field.index]) + "'";
       }
-      *value = *parsed;
+      if (std::abs(*parsed) > field.max_magnitude) {
+        return "expected a number within +-" + FormatNumber(field.max_magnitude) + " as field " +
+               std::to_string(field.index + 1) + ", found '" + std::string(f[field.index]) + "'";
+      }
+      *field.value = *parsed;
     }
     return std::nullopt;
   }

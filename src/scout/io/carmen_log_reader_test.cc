@@ -1,6 +1,7 @@
 #include "scout/io/carmen_log_reader.h"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <zlib.h>
 
 #include <cmath>
@@ -184,6 +185,37 @@ TEST(CarmenLogReader, AbsurdBeamCountsAreMalformedLines) {
   EXPECT_EQ(counts.malformed_lines, 4u);
   EXPECT_EQ(dataset.scans.size(), 1u);
   EXPECT_TRUE(AnyWarningContains(dataset, path.string() + ":4: malformed ROBOTLASER1"));
+}
+
+TEST(CarmenLogReader, CorruptCoordinatesAndTimesAreMalformedLines) {
+  const TestTempDirectory dir;
+  // A pose 1e12 m out would make a submap grow without bound; a time of
+  // 1e300 s would make every later scan go back in time.
+  const fs::path path =
+      dir.Write("far.log", Flaser(2, 1.0, 0, 0, 0, 1.0) + Flaser(2, 1.0, 1e12, 0, 0, 2.0) +
+                               Flaser(2, 1.0, 0, 0, 0, 1e300) + Odom(0, -1e12, 0, 2.5) +
+                               Flaser(2, 1.0, 0, 0, 0, 3.0));
+  CarmenLogCounts counts;
+  const Dataset dataset = ReadCarmenLog(path, &counts);
+  EXPECT_EQ(counts.malformed_lines, 3u);
+  ASSERT_EQ(dataset.scans.size(), 2u);
+  EXPECT_DOUBLE_EQ(dataset.scans[1].time_s, 3.0);
+  EXPECT_TRUE(dataset.odometry.empty());
+  EXPECT_TRUE(AnyWarningContains(dataset, path.string() + ":2: malformed FLASER"));
+  EXPECT_TRUE(AnyWarningContains(dataset, "expected a number within +-1000000 as field 5"));
+  EXPECT_TRUE(AnyWarningContains(dataset, path.string() + ":3: malformed FLASER"));
+  EXPECT_TRUE(AnyWarningContains(dataset, path.string() + ":4: malformed ODOM"));
+}
+
+TEST(CarmenLogReader, APipeOrDirectoryIsRefusedByName) {
+  const TestTempDirectory dir;
+  const fs::path fifo = dir.path() / "stream.log";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  // Reading a pipe would lose the bytes the format detection reads.
+  std::string message = ThrownMessage(fifo);
+  EXPECT_NE(message.find(fifo.string() + ": is not a regular file"), std::string::npos) << message;
+  message = ThrownMessage(dir.path());
+  EXPECT_NE(message.find(": is a directory"), std::string::npos) << message;
 }
 
 TEST(CarmenLogReader, ZeroBeamScansAreSkippedWithAWarning) {

@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "scout/common/error.h"
+#include "scout/common/input_file.h"
 #include "scout/io/explore_config.h"
 #include "scout/io/slam_config.h"
 #include "scout/io/yaml_fields.h"
@@ -86,6 +87,7 @@ void ReadSynthetic(YamlSection s, synthetic::SyntheticStreamOptions* o) {
 }  // namespace
 
 ScoutConfig LoadConfig(const std::filesystem::path& path) {
+  RequireRegularFile(path, "an options file (YAML)");
   YAML::Node root;
   try {
     root = YAML::LoadFile(path.string());

@@ -158,10 +158,13 @@ void ReadExploreOptions(YamlSection s, exploration::ExploreOptions* o) {
 void ReadLidarOptions(YamlSection l, sim::LidarOptions* o) {
   l.ReadPositive("range_max_m", &o->range_max_m);
   l.ReadNonNegative("range_min_m", &o->range_min_m);
-  l.ReadPositive("fov_deg", &o->fov_deg);
-  l.ReadInt("beams", &o->beams, 2);
+  l.ReadInRange("fov_deg", &o->fov_deg, 0.0, 360.0, YamlSection::Bound::kExclusive,
+                YamlSection::Bound::kInclusive);
+  // 0.01 degree apart over a full turn; more only exhausts memory.
+  l.ReadInt("beams", &o->beams, 2, 36000);
   l.ReadNonNegative("range_noise_stddev_m", &o->range_noise_stddev_m);
-  l.ReadNonNegative("dropout_probability", &o->dropout_probability);
+  l.ReadInRange("dropout_probability", &o->dropout_probability, 0.0, 1.0,
+                YamlSection::Bound::kInclusive, YamlSection::Bound::kInclusive);
   l.RejectUnknownKeys();
 }
 
@@ -200,6 +203,12 @@ void ValidateExploreAndRobot(const exploration::ExploreOptions& explore,
     exploration::CheckExplorationBoundary(explore.boundary);
   } catch (const InputError& e) {
     throw InputError(file + ": " + e.what());
+  }
+  // The simulator samples at most one scan per step: a longer step drops scans.
+  if (explore.dt_s > 1.0 / robot.scan_rate_hz * (1.0 + 1e-9)) {
+    throw InputError(file + ": 'explore.dt_s': expected at most one scan period (1 / " +
+                     "robot.scan_rate_hz = " + std::to_string(1.0 / robot.scan_rate_hz) +
+                     " s), got " + std::to_string(explore.dt_s));
   }
   Check(explore.goals, file, "explore.goals");
   Check(explore.traversability, file, "explore.traversability");

@@ -125,7 +125,19 @@ TEST_F(ExploreConfigTest, ErrorsNameTheKey) {
   const std::string predict = ErrorOf("explore:\n  goals:\n    guard:\n      predict_motion: 2\n");
   EXPECT_NE(predict.find("explore.goals.guard.predict_motion"), std::string::npos) << predict;
   const std::string dropout = ErrorOf("robot:\n  lidar:\n    dropout_probability: 1.5\n");
-  EXPECT_NE(dropout.find("dropout_probability"), std::string::npos) << dropout;
+  EXPECT_NE(dropout.find("robot.lidar.dropout_probability"), std::string::npos) << dropout;
+  const std::string fov = ErrorOf("robot:\n  lidar:\n    fov_deg: 400\n");
+  EXPECT_NE(fov.find("robot.lidar.fov_deg"), std::string::npos) << fov;
+  // Memory for a hundred million beams per scan ran out before the first goal.
+  const std::string beams = ErrorOf("robot:\n  lidar:\n    beams: 100000000\n");
+  EXPECT_NE(beams.find("'robot.lidar.beams': expected an integer from 2 to 36000"),
+            std::string::npos)
+      << beams;
+  // A step longer than the scan period drops scans (100 s steps drove nowhere).
+  const std::string step = ErrorOf("explore:\n  dt_s: 100\n");
+  EXPECT_NE(step.find("'explore.dt_s': expected at most one scan period"), std::string::npos)
+      << step;
+  EXPECT_EQ(ErrorOf("explore:\n  dt_s: 0.1\n"), "");
 }
 
 }  // namespace

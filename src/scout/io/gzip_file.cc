@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "scout/common/error.h"
+#include "scout/common/input_file.h"
 
 namespace scout::io {
 namespace {
@@ -25,10 +26,9 @@ using GzHandle = std::unique_ptr<gzFile_s, GzCloser>;
 
 GzHandle OpenGz(const fs::path& path) {
   // zlib would open a directory and fail only on the first read, with a
-  // message that suggests a corrupt file.
-  if (fs::is_directory(path)) {
-    throw InputError(path.string() + ": is a directory; expected a dataset file");
-  }
+  // message that suggests a corrupt file; a pipe would be read up to the
+  // format detection's bytes and then lose them.
+  RequireRegularFile(path, "a dataset or trajectory file");
   gzFile file = gzopen(path.c_str(), "rb");
   if (file == nullptr) {
     throw InputError(path.string() + ": cannot open for reading (" + std::strerror(errno) + ")");
@@ -50,6 +50,7 @@ std::string GzErrorText(gzFile file) {
 }  // namespace
 
 bool IsGzipFile(const fs::path& path) {
+  RequireRegularFile(path, "a dataset or trajectory file");
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     throw InputError(path.string() + ": cannot open for reading (" + std::strerror(errno) + ")");

@@ -3,10 +3,12 @@
 #include <signal.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <fstream>
 #include <system_error>
 
+#include "scout/common/atomic_file.h"
 #include "scout/common/error.h"
 
 namespace scout::io {
@@ -28,10 +30,38 @@ void RemoveAbandonedStaging(const std::filesystem::path& dir) {
   }
 }
 
+// The names the manifest in 'dir' lists (none without one).
+std::vector<std::string> ReadManifest(const std::filesystem::path& dir) {
+  std::vector<std::string> names;
+  std::ifstream in(dir / OutputDirectory::kManifestName);
+  std::string line;
+  while (std::getline(in, line)) {
+    if (!line.empty()) names.push_back(line);
+  }
+  return names;
+}
+
+// Only plain relative names below the directory: a manifest edited by hand
+// must not make a run delete files elsewhere.
+bool IsSafeName(const std::string& name) {
+  const std::filesystem::path path(name);
+  if (name.empty() || path.is_absolute()) return false;
+  for (const std::filesystem::path& part : path) {
+    if (part == ".." || part == ".") return false;
+  }
+  return true;
+}
+
+bool Contains(const std::vector<std::string>& names, const std::string& name) {
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
 }  // namespace
 
-OutputDirectory::OutputDirectory(const std::filesystem::path& dir) : dir_(dir) {
+OutputDirectory::OutputDirectory(const std::filesystem::path& dir, Mode mode)
+    : dir_(dir), mode_(mode) {
   std::error_code ec;
+  created_ = !std::filesystem::exists(dir_, ec);
   std::filesystem::create_directories(dir_, ec);
   if (ec || !std::filesystem::is_directory(dir_)) {
     throw InputError("cannot create output directory '" + dir_.string() +
@@ -53,6 +83,10 @@ OutputDirectory::OutputDirectory(const std::filesystem::path& dir) : dir_(dir) {
 OutputDirectory::~OutputDirectory() {
   std::error_code ec;
   std::filesystem::remove_all(staging_, ec);
+  // A run that failed leaves no trace: not even the directory it made.
+  if (!committed_ && created_ && std::filesystem::is_empty(dir_, ec)) {
+    std::filesystem::remove(dir_, ec);
+  }
 }
 
 std::filesystem::path OutputDirectory::Stage(const std::string& name) {
@@ -64,6 +98,7 @@ std::filesystem::path OutputDirectory::Stage(const std::string& name) {
 }
 
 void OutputDirectory::Commit() {
+  const std::vector<std::string> earlier = ReadManifest(dir_);
   for (const std::string& name : names_) {
     std::error_code ec;
     std::filesystem::create_directories((dir_ / name).parent_path(), ec);
@@ -72,6 +107,27 @@ void OutputDirectory::Commit() {
       throw InputError("cannot move '" + name + "' into '" + dir_.string() + "': " + ec.message());
     }
   }
+  std::vector<std::string> manifest = names_;
+  for (const std::string& name : earlier) {
+    if (Contains(manifest, name) || !IsSafeName(name)) continue;
+    if (mode_ == Mode::kAddFiles) {
+      manifest.push_back(name);
+      continue;
+    }
+    std::error_code ec;
+    const std::filesystem::path stale = dir_ / name;
+    if (!std::filesystem::is_regular_file(std::filesystem::symlink_status(stale, ec))) continue;
+    std::filesystem::remove(stale, ec);
+    // A subdirectory the earlier run made ("figures") goes when left empty.
+    const std::filesystem::path parent = stale.parent_path();
+    if (parent != dir_ && std::filesystem::is_empty(parent, ec)) {
+      std::filesystem::remove(parent, ec);
+    }
+  }
+  std::string text;
+  for (const std::string& name : manifest) text += name + "\n";
+  WriteTextFileAtomically(dir_ / kManifestName, text);
+  committed_ = true;
 }
 
 }  // namespace scout::io

@@ -10,13 +10,25 @@ namespace scout::io {
 // An output directory that never shows a partial result: files are written
 // into a hidden staging directory inside it and moved into place together by
 // Commit(). Without Commit() (an error, an interruption) the staging
-// directory is removed and the directory holds only what it held before.
+// directory is removed and the directory holds only what it held before (a
+// directory the run created is removed again).
+//
+// A hidden manifest (kManifestName) lists the files Scout wrote there, so a
+// new run into a used directory does not leave an earlier run's outputs
+// beside its own (a reference.tum from a run with --reference next to a
+// summary.json without one). Files Scout did not write are never touched.
 class OutputDirectory {
  public:
+  enum class Mode {
+    kReplaceRun,  // a run's outputs: Commit() removes Scout's earlier files it did not rewrite
+    kAddFiles,    // files added to a run (a report): everything else stays
+  };
+  static constexpr const char* kManifestName = ".scout-outputs";
+
   // Creates 'dir' if needed and checks that it is writable, before any long
   // computation starts. Throws InputError naming the directory otherwise.
   // Staging directories left by runs that were killed are removed.
-  explicit OutputDirectory(const std::filesystem::path& dir);
+  explicit OutputDirectory(const std::filesystem::path& dir, Mode mode = Mode::kReplaceRun);
   ~OutputDirectory();
   OutputDirectory(const OutputDirectory&) = delete;
   OutputDirectory& operator=(const OutputDirectory&) = delete;
@@ -24,13 +36,18 @@ class OutputDirectory {
   // Returns where to write output 'name' now; registers it for Commit().
   // 'name' may name a subdirectory ("figures/a.svg"), created as needed.
   std::filesystem::path Stage(const std::string& name);
-  // Moves every staged file into the directory. Throws InputError on failure.
+  // Moves every staged file into the directory, then (kReplaceRun) removes
+  // the files of the manifest that were not staged, and records the
+  // manifest. Throws InputError on failure.
   void Commit();
 
   const std::filesystem::path& path() const { return dir_; }
 
  private:
   std::filesystem::path dir_;
+  Mode mode_;
+  bool created_ = false;    // the constructor made 'dir_'
+  bool committed_ = false;  // Commit() finished
   std::filesystem::path staging_;
   std::vector<std::string> names_;
 };

@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <fstream>
+#include <iterator>
 #include <random>
 
 #include "scout/common/atomic_file.h"
@@ -21,9 +23,13 @@ fs::path FreshDir() {
   return dir;
 }
 
+// The directory's entries, the manifest aside.
 std::vector<std::string> Listing(const fs::path& dir) {
   std::vector<std::string> names;
-  for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
+  for (const auto& e : fs::directory_iterator(dir)) {
+    const std::string name = e.path().filename().string();
+    if (name != OutputDirectory::kManifestName) names.push_back(name);
+  }
   std::sort(names.begin(), names.end());
   return names;
 }
@@ -71,6 +77,68 @@ TEST(OutputDirectory, WithoutCommitNothingIsLeftBehind) {
   }
   EXPECT_EQ(Listing(dir), (std::vector<std::string>{"older.txt"}));
   fs::remove_all(dir);
+  // A directory the failed run created goes too.
+  try {
+    OutputDirectory out(dir);
+    WriteTextFileAtomically(out.Stage("summary.json"), "{}");
+    throw InputError("simulated failure half-way");
+  } catch (const InputError&) {
+  }
+  EXPECT_FALSE(fs::exists(dir));
+}
+
+// Writes 'names' (each holding 'content') through one committed run.
+void CommitRun(const fs::path& dir, const std::vector<std::string>& names,
+               const std::string& content,
+               OutputDirectory::Mode mode = OutputDirectory::Mode::kReplaceRun) {
+  OutputDirectory out(dir, mode);
+  for (const std::string& name : names) WriteTextFileAtomically(out.Stage(name), content);
+  out.Commit();
+}
+
+std::string Contents(const fs::path& path) {
+  std::ifstream in(path);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+TEST(OutputDirectory, ANewRunRemovesTheEarlierRunsOutputsItDoesNotRewrite) {
+  const fs::path dir = FreshDir();
+  CommitRun(dir, {"summary.json", "reference.tum", "figures/a.svg", "figures/b.svg"}, "first");
+  WriteTextFileAtomically(dir / "notes.txt", "the user's");
+  CommitRun(dir, {"summary.json", "figures/a.svg"}, "second");
+  // Only Scout's own earlier files go; the user's stay.
+  EXPECT_EQ(Listing(dir), (std::vector<std::string>{"figures", "notes.txt", "summary.json"}));
+  EXPECT_EQ(Listing(dir / "figures"), std::vector<std::string>{"a.svg"});
+  EXPECT_EQ(Contents(dir / "summary.json"), "second");
+  // A run without figures leaves no empty figures directory behind.
+  CommitRun(dir, {"summary.json"}, "third");
+  EXPECT_EQ(Listing(dir), (std::vector<std::string>{"notes.txt", "summary.json"}));
+  fs::remove_all(dir);
+}
+
+TEST(OutputDirectory, AddedFilesKeepTheRunAndAreRemovedByTheNextRun) {
+  const fs::path dir = FreshDir();
+  CommitRun(dir, {"summary.json", "map.png"}, "run");
+  CommitRun(dir, {"report.html"}, "report", OutputDirectory::Mode::kAddFiles);
+  EXPECT_EQ(Listing(dir), (std::vector<std::string>{"map.png", "report.html", "summary.json"}));
+  CommitRun(dir, {"summary.json"}, "rerun");
+  EXPECT_EQ(Listing(dir), std::vector<std::string>{"summary.json"});
+  fs::remove_all(dir);
+}
+
+TEST(OutputDirectory, AManifestNamingFilesOutsideTheDirectoryIsIgnored) {
+  const fs::path dir = FreshDir();
+  const fs::path outside = FreshDir();
+  fs::create_directories(outside);
+  WriteTextFileAtomically(outside / "keep.txt", "keep");
+  fs::create_directories(dir);
+  WriteTextFileAtomically(
+      dir / OutputDirectory::kManifestName,
+      "../" + outside.filename().string() + "/keep.txt\n" + (outside / "keep.txt").string() + "\n");
+  CommitRun(dir, {"summary.json"}, "run");
+  EXPECT_TRUE(fs::exists(outside / "keep.txt"));
+  fs::remove_all(dir);
+  fs::remove_all(outside);
 }
 
 TEST(OutputDirectory, RemovesStagingLeftByKilledRuns) {

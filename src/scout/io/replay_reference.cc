@@ -1,18 +1,25 @@
 #include "scout/io/replay_reference.h"
 
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "scout/common/error.h"
+#include "scout/common/input_file.h"
 #include "scout/io/trajectory_association.h"
 #include "scout/io/tum_trajectory.h"
 
 namespace scout::io {
 namespace {
 
-// True if the first non-comment line of 'path' consists of eight numbers.
+// True if the first non-comment line of 'path' has eight fields, the first
+// a number (CARMEN lines start with a message name), or if there is no such
+// line: then the TUM reader says what is missing. A NaN in a TUM line is
+// reported by the TUM reader with its line number.
 bool LooksLikeTum(const std::filesystem::path& path) {
+  RequireRegularFile(path, "a reference trajectory (TUM file or CARMEN log)");
   std::ifstream in(path);
   if (!in) throw InputError(path.string() + ": cannot open reference trajectory");
   char magic[2] = {0, 0};
@@ -25,14 +32,18 @@ bool LooksLikeTum(const std::filesystem::path& path) {
   in.seekg(0);
   std::string line;
   while (std::getline(in, line)) {
+    if (line.rfind("#ROSBAG", 0) == 0) return false;
     if (line.empty() || line[0] == '#') continue;
     std::istringstream fields(line);
-    double value = 0.0;
-    int count = 0;
-    while (fields >> value) ++count;
-    return count == 8 && fields.eof();
+    std::vector<std::string> tokens;
+    std::string token;
+    while (fields >> token) tokens.push_back(token);
+    if (tokens.empty()) continue;
+    char* end = nullptr;
+    std::strtod(tokens[0].c_str(), &end);
+    return tokens.size() == 8 && end == tokens[0].c_str() + tokens[0].size();
   }
-  return false;
+  return true;
 }
 
 std::vector<std::vector<float>> Ranges(const Dataset& d) {

@@ -86,6 +86,10 @@ std::optional<BagTopic> ChooseTopic(const std::vector<BagTopic>& topics, const s
   return candidates.front();
 }
 
+// Odometry farther out than this (metres) is corrupt: a submap would have to
+// grow to include it.
+constexpr double kMaxCoordinateM = 1e6;
+
 double StampOrBagTime(const ros::Time& stamp, const ros::Time& bag_time) {
   return stamp.isZero() ? bag_time.toSec() : stamp.toSec();
 }
@@ -113,6 +117,15 @@ class BagConverter {
                         FormatNumber(dataset_->scans.back().time_s) + " s); dropped");
       return;
     }
+    if (!std::isfinite(message.angle_min) || !std::isfinite(message.angle_increment) ||
+        message.angle_increment == 0.f) {
+      warnings_.Add("scans with unusable angles",
+                    source_ + ": LaserScan at t=" + FormatNumber(time) + " s has angle_min " +
+                        FormatNumber(message.angle_min) + " and angle_increment " +
+                        FormatNumber(message.angle_increment) +
+                        "; skipped (expected finite angles and a nonzero increment)");
+      return;
+    }
     sensor::LaserScan scan;
     scan.time_s = time;
     scan.angle_min_rad = message.angle_min;
@@ -133,8 +146,17 @@ class BagConverter {
       return;
     }
     const geometry_msgs::Pose& pose = message.pose.pose;
-    dataset_->odometry.push_back(
-        {time, geometry::Rigid2d(pose.position.x, pose.position.y, YawOf(pose.orientation))});
+    const double yaw = YawOf(pose.orientation);
+    if (!(std::abs(pose.position.x) <= kMaxCoordinateM) ||
+        !(std::abs(pose.position.y) <= kMaxCoordinateM) || !std::isfinite(yaw)) {
+      warnings_.Add("odometry messages with unusable poses",
+                    source_ + ": Odometry at t=" + FormatNumber(time) + " s at (" +
+                        FormatNumber(pose.position.x) + ", " + FormatNumber(pose.position.y) +
+                        "); dropped (expected finite coordinates within 1000 km and a finite "
+                        "orientation)");
+      return;
+    }
+    dataset_->odometry.push_back({time, geometry::Rigid2d(pose.position.x, pose.position.y, yaw)});
   }
 
   void Finish() { warnings_.Finish(source_); }

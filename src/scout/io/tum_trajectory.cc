@@ -11,6 +11,7 @@
 
 #include "scout/common/atomic_file.h"
 #include "scout/common/error.h"
+#include "scout/common/input_file.h"
 
 namespace scout::io {
 namespace {
@@ -49,6 +50,7 @@ void WriteTumTrajectory(const std::vector<StampedPose>& trajectory,
 }
 
 std::vector<StampedPose> ReadTumTrajectory(const std::filesystem::path& path) {
+  RequireRegularFile(path, "a TUM trajectory file");
   std::ifstream in(path);
   if (!in) throw InputError(path.string() + ": cannot open TUM trajectory file");
   std::vector<StampedPose> trajectory;

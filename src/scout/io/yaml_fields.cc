@@ -93,7 +93,7 @@ void YamlSection::ReadInRange(const std::string& key, double* value, double min,
   *value = v;
 }
 
-void YamlSection::ReadInt(const std::string& key, int* value, int min_value) {
+void YamlSection::ReadInt(const std::string& key, int* value, int min_value, int max_value) {
   const YAML::Node n = Take(key);
   if (!n) return;
   int v = 0;
@@ -103,9 +103,13 @@ void YamlSection::ReadInt(const std::string& key, int* value, int min_value) {
     throw InputError(file_ + ": '" + Name(key) + "': expected an integer, got '" + YAML::Dump(n) +
                      "'");
   }
-  if (v < min_value) {
-    throw InputError(file_ + ": '" + Name(key) + "': expected an integer >= " +
-                     std::to_string(min_value) + ", got " + std::to_string(v));
+  if (v < min_value || v > max_value) {
+    const std::string expected =
+        max_value == std::numeric_limits<int>::max()
+            ? ">= " + std::to_string(min_value)
+            : "from " + std::to_string(min_value) + " to " + std::to_string(max_value);
+    throw InputError(file_ + ": '" + Name(key) + "': expected an integer " + expected + ", got " +
+                     std::to_string(v));
   }
   *value = v;
 }

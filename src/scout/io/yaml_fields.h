@@ -4,6 +4,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <Eigen/Core>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -28,7 +29,8 @@ class YamlSection {
   // A finite number in [min, max], (min, max), [min, max) or (min, max].
   void ReadInRange(const std::string& key, double* value, double min, double max, Bound min_bound,
                    Bound max_bound);
-  void ReadInt(const std::string& key, int* value, int min_value);
+  void ReadInt(const std::string& key, int* value, int min_value,
+               int max_value = std::numeric_limits<int>::max());
   void ReadBool(const std::string& key, bool* value);
   // A sequence of [x, y] pairs of finite numbers (an empty sequence clears
   // 'points').

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "scout/common/error.h"
+#include "scout/common/input_file.h"
 
 namespace scout::report {
 namespace {
@@ -24,6 +25,7 @@ std::vector<std::string> SplitFields(const std::string& line) {
 
 CsvTable CsvTable::Read(const std::filesystem::path& path,
                         const std::vector<std::string>& required_columns) {
+  RequireRegularFile(path, "a CSV table");
   std::ifstream in(path);
   if (!in) throw InputError("cannot open '" + path.string() + "'");
   CsvTable table;

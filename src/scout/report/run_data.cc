@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "scout/common/error.h"
+#include "scout/common/input_file.h"
 #include "scout/report/csv_table.h"
 
 namespace scout::report {
@@ -90,6 +91,7 @@ void CheckNumbers(const nlohmann::json& node, const std::vector<std::string>& se
 }
 
 nlohmann::json ReadSummary(const std::filesystem::path& path) {
+  RequireRegularFile(path, "a run's summary.json");
   std::ifstream in(path);
   if (!in) throw InputError("cannot open '" + path.string() + "'");
   nlohmann::json summary;
