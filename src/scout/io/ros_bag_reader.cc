@@ -5,6 +5,7 @@
 static_assert(__cplusplus == 201703L, "compile ros_bag_reader.cc with scout_ros1_sources()");
 
 #include <nav_msgs/Odometry.h>
+#include <ros/exception.h>
 #include <rosbag/bag.h>
 #include <rosbag/exceptions.h>
 #include <rosbag/view.h>
@@ -159,6 +160,12 @@ class BagConverter {
     dataset_->odometry.push_back({time, geometry::Rigid2d(pose.position.x, pose.position.y, yaw)});
   }
 
+  void SkipCorrupt(const std::string& topic, const ros::Time& bag_time, const std::string& why) {
+    warnings_.Add("unreadable messages", source_ + ": message on " + topic + " at bag time " +
+                                             FormatNumber(bag_time.toSec()) + " s is corrupt (" +
+                                             why + "); skipped");
+  }
+
   void Finish() { warnings_.Finish(source_); }
 
  private:
@@ -190,12 +197,18 @@ void ReadPlainBag(const fs::path& bag_path, const std::string& source,
   BagConverter converter(source, dataset);
   rosbag::View view(bag, rosbag::TopicQuery(wanted));
   for (const rosbag::MessageInstance& message : view) {
-    if (message.getTopic() == scan_topic->name) {
-      if (auto scan = message.instantiate<sensor_msgs::LaserScan>()) {
-        converter.AddScan(*scan, message.getTime());
+    // A message whose bytes are corrupt (a length field beyond the message)
+    // is skipped; the chunks around it still read.
+    try {
+      if (message.getTopic() == scan_topic->name) {
+        if (auto scan = message.instantiate<sensor_msgs::LaserScan>()) {
+          converter.AddScan(*scan, message.getTime());
+        }
+      } else if (auto odometry = message.instantiate<nav_msgs::Odometry>()) {
+        converter.AddOdometry(*odometry, message.getTime());
       }
-    } else if (auto odometry = message.instantiate<nav_msgs::Odometry>()) {
-      converter.AddOdometry(*odometry, message.getTime());
+    } catch (const ros::Exception& e) {
+      converter.SkipCorrupt(message.getTopic(), message.getTime(), e.what());
     }
   }
   converter.Finish();

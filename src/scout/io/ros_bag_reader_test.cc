@@ -12,6 +12,7 @@
 #include <cmath>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <optional>
 #include <string>
 
@@ -205,6 +206,52 @@ TEST(RosBagReader, StampsGoingBackAndEmptyScansAreDroppedWithWarnings) {
   EXPECT_DOUBLE_EQ(dataset.scans[1].time_s, 4.0);
   EXPECT_TRUE(AnyWarningContains(dataset, "LaserScan at t=0.5"));
   EXPECT_TRUE(AnyWarningContains(dataset, "has 0 beams"));
+}
+
+TEST(RosBagReader, UnusableAnglesOdometryAndCorruptMessagesAreSkippedWithWarnings) {
+  const TestTempDirectory dir;
+  const fs::path path = dir.path() / "odd.bag";
+  {
+    rosbag::Bag bag(path.string(), rosbag::bagmode::Write);
+    bag.write("/scan", ros::Time(1.0), Scan(1.0, 3));
+    sensor_msgs::LaserScan no_increment = Scan(2.0, 3);
+    no_increment.angle_increment = 0.f;
+    bag.write("/scan", ros::Time(2.0), no_increment);
+    sensor_msgs::LaserScan nan_angle = Scan(3.0, 3);
+    nan_angle.angle_min = std::numeric_limits<float>::quiet_NaN();
+    bag.write("/scan", ros::Time(3.0), nan_angle);
+    // Its ranges (7 beams of 1..7 m) get a corrupt length below.
+    bag.write("/scan", ros::Time(4.0), Scan(4.0, 7));
+    bag.write("/scan", ros::Time(5.0), Scan(5.0, 3));
+    bag.write("/odom", ros::Time(1.0), Odom(1.0, 0, 0, 0));
+    bag.write("/odom", ros::Time(2.0), Odom(2.0, 1e12, 0, 0));
+    bag.write("/odom", ros::Time(3.0), Odom(3.0, 1, 0, 0));
+  }
+  // The ranges array is its length (uint32 7) followed by the floats 1..7:
+  // a length far beyond the message makes deserialisation overrun.
+  std::string bytes;
+  {
+    std::ifstream in(path, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  std::string pattern(4, '\0');
+  pattern[0] = 7;
+  const float first = 1.0f;
+  pattern.append(reinterpret_cast<const char*>(&first), sizeof(first));
+  const size_t at = bytes.find(pattern);
+  ASSERT_NE(at, std::string::npos);
+  bytes[at] = 100;
+  std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
+
+  const Dataset dataset = ReadRosBag(path);
+  ASSERT_EQ(dataset.scans.size(), 2u);
+  EXPECT_DOUBLE_EQ(dataset.scans[1].time_s, 5.0);
+  ASSERT_EQ(dataset.odometry.size(), 2u);
+  EXPECT_DOUBLE_EQ(dataset.odometry[1].time_s, 3.0);
+  EXPECT_TRUE(AnyWarningContains(dataset, "LaserScan at t=2 s has angle_min"));
+  EXPECT_TRUE(AnyWarningContains(dataset, "LaserScan at t=3 s has angle_min nan"));
+  EXPECT_TRUE(AnyWarningContains(dataset, "message on /scan at bag time 4 s is corrupt"));
+  EXPECT_TRUE(AnyWarningContains(dataset, "Odometry at t=2 s at (1000000000000, 0); dropped"));
 }
 
 TEST(RosBagReader, TruncatedOrCorruptBagIsAnErrorNamingTheFile) {
