@@ -203,6 +203,17 @@ TEST_F(ScoutCli, ReportAndCompareRedrawFromTheOutputFiles) {
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_TRUE(fs::exists(dir_ / "cmp" / "compare.html"));
   EXPECT_TRUE(fs::exists(dir_ / "cmp" / "figures" / "compare_p.svg"));
+  // A comparison written over one of its runs, or over another command's run,
+  // would remove that run: refused, the run kept.
+  r = RunScout("compare " + a.string() + " " + b.string() + " --out " + b.string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("holds the input"), std::string::npos) << r.output;
+  r = RunScout("compare " + b.string() + " --out " + a.string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("holds the outputs of `scout frontier-bench`"), std::string::npos)
+      << r.output;
+  EXPECT_TRUE(fs::exists(a / "summary.json"));
+  EXPECT_TRUE(fs::exists(b / "summary.json"));
   // Bad input: exit code 2, the message names the file and line; nothing written.
   std::ofstream(b / "frontier.csv", std::ios::app) << "7,dfd,x\n";
   r = RunScout("report " + b.string());

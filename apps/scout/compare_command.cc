@@ -22,7 +22,9 @@ int RunCompare(const CompareArgs& args) {
   const std::vector<std::filesystem::path> dirs(args.dirs.begin(), args.dirs.end());
   // Read every run before creating the output directory.
   const std::vector<report::ReportFile> files = report::BuildComparison(dirs);
-  io::OutputDirectory out(args.out_dir);
+  std::vector<std::filesystem::path> inputs;
+  for (const std::filesystem::path& dir : dirs) inputs.push_back(dir / "summary.json");
+  io::OutputDirectory out(args.out_dir, io::OutputDirectory::Mode::kReplaceRun, "compare", inputs);
   for (const report::ReportFile& file : files) {
     WriteTextFileAtomically(out.Stage(file.name), file.content);
   }

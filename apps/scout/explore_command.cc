@@ -249,7 +249,7 @@ CLI::App* AddExploreCommand(CLI::App& app, ExploreArgs* args) {
   cmd->add_option("--world", args->world, "office, museum (generated) or a map_server .yaml")
       ->capture_default_str();
   cmd->add_option("--world-size", args->world_size,
-                  "outer extent of a generated world, W or WxH metres, at most 1000 (default: the "
+                  "outer extent of a generated world, W or WxH metres, at most 500 (default: the "
                   "generator's)");
   cmd->add_option("--seed", args->seed, "seed of the generated world and the sensor noise")
       ->capture_default_str()
@@ -287,7 +287,8 @@ int RunExplore(const ExploreArgs& args) {
     io::CheckFlaserGeometry(lidar.angle_min_rad(), lidar.angle_increment_rad(),
                             options.robot.lidar.beams, "--record-log");
   }
-  io::OutputDirectory out(args.out_dir);
+  io::OutputDirectory out(args.out_dir, io::OutputDirectory::Mode::kReplaceRun, "explore",
+                          {args.world, args.config_file});
   if (args.record_log) {
     log.emplace(out.Stage("sensor.log"));
     loop.set_scan_recorder([&log](const sensor::LaserScan& scan, const geometry::Rigid2d& true_pose,

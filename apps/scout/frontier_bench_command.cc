@@ -28,7 +28,7 @@ CLI::App* AddFrontierBenchCommand(CLI::App& app, FrontierBenchArgs* args) {
   cmd->add_option("--world", args->world, "office, museum, or a ROS map_server .yaml file")
       ->capture_default_str();
   cmd->add_option("--world-size", args->world_size,
-                  "outer extent of a generated world, W or WxH metres, at most 1000 (default: the "
+                  "outer extent of a generated world, W or WxH metres, at most 500 (default: the "
                   "generator's)");
   cmd->add_option("--seed", args->seed, "seed of the world, trajectory, sensor noise and drift")
       ->capture_default_str()
@@ -63,7 +63,8 @@ int RunFrontierBench(const FrontierBenchArgs& args) {
       args.world_size.empty() ? std::nullopt
                               : std::optional<sim::WorldSize>(sim::ParseWorldSize(args.world_size));
   const sim::World world = sim::MakeWorld(args.world, args.seed, world_size);
-  io::OutputDirectory out(args.out_dir);
+  io::OutputDirectory out(args.out_dir, io::OutputDirectory::Mode::kReplaceRun, "frontier-bench",
+                          {args.world, args.config_file});
 
   const bool terminal = !args.quiet && ::isatty(STDERR_FILENO);
   synthetic::SyntheticEventStream stream(world, config.synthetic, args.seed);

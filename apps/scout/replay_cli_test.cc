@@ -242,6 +242,11 @@ TEST_F(ReplayCli, BadInputIsAClearErrorWithoutPartialOutputs) {
   EXPECT_NE(r.output.find(Dir().string() + ": is a directory; expected an options file"),
             std::string::npos)
       << r.output;
+  // An output directory holding the dataset: its outputs could remove it.
+  r = RunScout("replay " + Log() + " --out " + Dir().string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("holds the input '" + Log() + "'"), std::string::npos) << r.output;
+  EXPECT_TRUE(fs::exists(Log()));
   // Scans whose every range is unusable (negative) map nothing.
   std::ofstream(Dir() / "negative.log")
       << "FLASER 3 -1 -1 -1 0 0 0 0 0 0 1.0 h 1.0\nFLASER 3 -1 -1 -1 0 0 0 0 0 0 2.0 h 2.0\n";

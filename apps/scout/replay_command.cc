@@ -209,7 +209,8 @@ int RunReplay(const ReplayArgs& args) {
   }
   std::optional<io::ScanReference> reference;
   if (!args.reference.empty()) reference = io::LoadScanReference(dataset, args.reference);
-  io::OutputDirectory out(args.out_dir);
+  io::OutputDirectory out(args.out_dir, io::OutputDirectory::Mode::kReplaceRun, "replay",
+                          {args.dataset, args.reference, args.config_file});
 
   const bool terminal = !args.quiet && ::isatty(STDERR_FILENO);
   slam::MapBuilder builder(config.slam,

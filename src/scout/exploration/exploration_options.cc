@@ -1,6 +1,7 @@
 #include "scout/exploration/exploration_options.h"
 
 #include <algorithm>
+#include <boost/geometry.hpp>
 #include <cmath>
 #include <stdexcept>
 
@@ -48,6 +49,23 @@ void CheckExplorationBoundary(const std::vector<Eigen::Vector2d>& boundary) {
   }
   for (const Eigen::Vector2d& v : boundary) {
     if (!v.allFinite()) throw InputError("'explore.boundary': expected finite coordinates");
+  }
+  if (boundary.empty()) return;
+  // Only a simple polygon has one inside: a bowtie's second lobe would count
+  // as outside, and a polygon without area holds nothing.
+  namespace bg = boost::geometry;
+  using Point = bg::model::d2::point_xy<double>;
+  bg::model::ring<Point, /*clockwise=*/false, /*closed=*/false> ring;
+  for (const Eigen::Vector2d& v : boundary) ring.push_back(Point(v.x(), v.y()));
+  if (bg::intersects(ring)) {
+    throw InputError(
+        "'explore.boundary': the polygon crosses itself; expected a simple polygon "
+        "(edges meeting only at consecutive vertices)");
+  }
+  if (!(std::abs(bg::area(ring)) > 1e-9)) {
+    throw InputError(
+        "'explore.boundary': the polygon has no area (its vertices lie on a line); "
+        "expected a simple polygon around the start");
   }
 }
 

@@ -93,13 +93,20 @@ TEST_F(ExploreConfigTest, BoundaryIsAListOfPoints) {
   ASSERT_EQ(c.explore.boundary.size(), 3u);
   EXPECT_EQ(c.explore.boundary[1], Eigen::Vector2d(4.5, -1.0));
   EXPECT_EQ(c.explore.boundary[2], Eigen::Vector2d(2.0, 3.25));
+  // Either orientation.
+  EXPECT_EQ(Load("explore:\n  boundary: [[0, 0], [2, 3.25], [4.5, -1]]\n").explore.boundary.size(),
+            3u);
   // Too few vertices, a vertex that is not a pair of finite numbers, not a list.
   const std::pair<const char*, const char*> cases[] = {
       {"[[0, 0], [1, 1]]", "'explore.boundary': expected at least three"},
       {"[[0, 0], [1, x], [2, 2]]", "'explore.boundary': item 2"},
       {"[[0, 0, 0], [1, 1], [2, 2]]", "'explore.boundary': item 1"},
       {"[[0, .nan], [1, 1], [2, 2]]", "'explore.boundary': item 1"},
-      {"3", "expected a sequence of [x, y] pairs"}};
+      {"3", "expected a sequence of [x, y] pairs"},
+      // A bowtie's second lobe would count as outside; a line holds nothing.
+      {"[[2, 5], [5, 7.5], [5, 5], [2, 7.5]]", "the polygon crosses itself"},
+      {"[[0, 0], [1, 1], [2, 2]]", "the polygon has no area"},
+      {"[[1, 1], [1, 1], [1, 1]]", "the polygon has no area"}};
   for (const auto& [boundary, expected] : cases) {
     const std::string error = ErrorOf(std::string("explore:\n  boundary: ") + boundary + "\n");
     EXPECT_NE(error.find(expected), std::string::npos) << boundary << ": " << error;

@@ -30,15 +30,40 @@ void RemoveAbandonedStaging(const std::filesystem::path& dir) {
   }
 }
 
-// The names the manifest in 'dir' lists (none without one).
-std::vector<std::string> ReadManifest(const std::filesystem::path& dir) {
+const std::string kCommandLinePrefix = "# scout ";
+
+struct Manifest {
+  std::string command;  // empty: not recorded
   std::vector<std::string> names;
+};
+
+// The manifest in 'dir' (empty without one).
+Manifest ReadManifest(const std::filesystem::path& dir) {
+  Manifest manifest;
   std::ifstream in(dir / OutputDirectory::kManifestName);
   std::string line;
   while (std::getline(in, line)) {
-    if (!line.empty()) names.push_back(line);
+    if (line.rfind(kCommandLinePrefix, 0) == 0) {
+      manifest.command = line.substr(kCommandLinePrefix.size());
+    } else if (!line.empty() && line[0] != '#') {
+      manifest.names.push_back(line);
+    }
   }
-  return names;
+  return manifest;
+}
+
+// True if 'path' lies inside 'dir' (at any depth), symbolic links resolved.
+bool IsInside(const std::filesystem::path& path, const std::filesystem::path& dir) {
+  std::error_code ec;
+  const std::filesystem::path file = std::filesystem::weakly_canonical(path, ec);
+  if (ec) return false;
+  const std::filesystem::path root = std::filesystem::weakly_canonical(dir, ec);
+  if (ec) return false;
+  for (std::filesystem::path p = file.parent_path(); !p.empty(); p = p.parent_path()) {
+    if (p == root) return true;
+    if (p == p.parent_path()) break;
+  }
+  return false;
 }
 
 // Only plain relative names below the directory: a manifest edited by hand
@@ -58,9 +83,28 @@ bool Contains(const std::vector<std::string>& names, const std::string& name) {
 
 }  // namespace
 
-OutputDirectory::OutputDirectory(const std::filesystem::path& dir, Mode mode)
-    : dir_(dir), mode_(mode) {
+OutputDirectory::OutputDirectory(const std::filesystem::path& dir, Mode mode,
+                                 const std::string& command,
+                                 const std::vector<std::filesystem::path>& inputs)
+    : dir_(dir), mode_(mode), command_(command) {
   std::error_code ec;
+  const Manifest earlier = ReadManifest(dir_);
+  if (mode_ == Mode::kAddFiles) {
+    command_ = earlier.command;
+  } else {
+    for (const std::filesystem::path& input : inputs) {
+      if (!input.empty() && std::filesystem::exists(input, ec) && IsInside(input, dir_)) {
+        throw InputError("output directory '" + dir_.string() + "' holds the input '" +
+                         input.string() + "', which the run's outputs could replace or remove; " +
+                         "choose another --out");
+      }
+    }
+    if (!command_.empty() && !earlier.command.empty() && earlier.command != command_) {
+      throw InputError("output directory '" + dir_.string() + "' holds the outputs of `scout " +
+                       earlier.command + "` (listed in its " + kManifestName + "), which `scout " +
+                       command_ + "` would replace; choose another --out, or delete them first");
+    }
+  }
   created_ = !std::filesystem::exists(dir_, ec);
   std::filesystem::create_directories(dir_, ec);
   if (ec || !std::filesystem::is_directory(dir_)) {
@@ -98,7 +142,7 @@ std::filesystem::path OutputDirectory::Stage(const std::string& name) {
 }
 
 void OutputDirectory::Commit() {
-  const std::vector<std::string> earlier = ReadManifest(dir_);
+  const std::vector<std::string> earlier = ReadManifest(dir_).names;
   for (const std::string& name : names_) {
     std::error_code ec;
     std::filesystem::create_directories((dir_ / name).parent_path(), ec);
@@ -124,7 +168,7 @@ void OutputDirectory::Commit() {
       std::filesystem::remove(parent, ec);
     }
   }
-  std::string text;
+  std::string text = command_.empty() ? "" : kCommandLinePrefix + command_ + "\n";
   for (const std::string& name : manifest) text += name + "\n";
   WriteTextFileAtomically(dir_ / kManifestName, text);
   committed_ = true;

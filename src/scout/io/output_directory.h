@@ -17,6 +17,10 @@ namespace scout::io {
 // new run into a used directory does not leave an earlier run's outputs
 // beside its own (a reference.tum from a run with --reference next to a
 // summary.json without one). Files Scout did not write are never touched.
+// The manifest also names the command that made the run: another command's
+// run there is refused rather than replaced, and so is an output directory
+// that holds one of the run's own inputs (a replay of an exploration's
+// sensor.log into that exploration's directory would remove the log).
 class OutputDirectory {
  public:
   enum class Mode {
@@ -26,9 +30,14 @@ class OutputDirectory {
   static constexpr const char* kManifestName = ".scout-outputs";
 
   // Creates 'dir' if needed and checks that it is writable, before any long
-  // computation starts. Throws InputError naming the directory otherwise.
-  // Staging directories left by runs that were killed are removed.
-  explicit OutputDirectory(const std::filesystem::path& dir, Mode mode = Mode::kReplaceRun);
+  // computation starts. Throws InputError naming the directory otherwise,
+  // and (kReplaceRun) when 'dir' holds one of 'inputs' (files the run reads;
+  // absent ones are ignored) or the outputs of a command other than
+  // 'command' ("replay", ...; empty: no check). Staging directories left by
+  // runs that were killed are removed.
+  explicit OutputDirectory(const std::filesystem::path& dir, Mode mode = Mode::kReplaceRun,
+                           const std::string& command = "",
+                           const std::vector<std::filesystem::path>& inputs = {});
   ~OutputDirectory();
   OutputDirectory(const OutputDirectory&) = delete;
   OutputDirectory& operator=(const OutputDirectory&) = delete;
@@ -46,6 +55,7 @@ class OutputDirectory {
  private:
   std::filesystem::path dir_;
   Mode mode_;
+  std::string command_;     // the manifest's: this run's, or (kAddFiles) the earlier run's
   bool created_ = false;    // the constructor made 'dir_'
   bool committed_ = false;  // Commit() finished
   std::filesystem::path staging_;

@@ -126,6 +126,37 @@ TEST(OutputDirectory, AddedFilesKeepTheRunAndAreRemovedByTheNextRun) {
   fs::remove_all(dir);
 }
 
+TEST(OutputDirectory, AnotherCommandsRunOrAnInputInsideIsRefusedBeforeAnythingIsWritten) {
+  const fs::path dir = FreshDir();
+  {
+    OutputDirectory out(dir, OutputDirectory::Mode::kReplaceRun, "explore");
+    WriteTextFileAtomically(out.Stage("sensor.log"), "FLASER ...");
+    out.Commit();
+  }
+  // A report adds to the exploration and keeps it recorded as one.
+  CommitRun(dir, {"report.html"}, "report", OutputDirectory::Mode::kAddFiles);
+  const auto error_of = [&](const std::string& command, const std::vector<fs::path>& inputs) {
+    try {
+      OutputDirectory out(dir, OutputDirectory::Mode::kReplaceRun, command, inputs);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  std::string e = error_of("replay", {});
+  EXPECT_NE(e.find("holds the outputs of `scout explore`"), std::string::npos) << e;
+  // The exploration's own log replayed into its directory would remove it.
+  e = error_of("explore", {dir / "sensor.log"});
+  EXPECT_NE(e.find("holds the input '" + (dir / "sensor.log").string() + "'"), std::string::npos)
+      << e;
+  e = error_of("explore", {dir / "." / "sensor.log"});
+  EXPECT_NE(e.find("holds the input"), std::string::npos) << e;
+  // Inputs elsewhere, absent ones and the same command are fine.
+  EXPECT_EQ(error_of("explore", {dir.parent_path() / "elsewhere.log", dir / "absent.log"}), "");
+  EXPECT_EQ(Listing(dir), (std::vector<std::string>{"report.html", "sensor.log"}));
+  fs::remove_all(dir);
+}
+
 TEST(OutputDirectory, AManifestNamingFilesOutsideTheDirectoryIsIgnored) {
   const fs::path dir = FreshDir();
   const fs::path outside = FreshDir();

@@ -15,9 +15,11 @@ struct WorldSize {
   double height_m = 0.0;
 };
 
-// The largest side a generated world may have: 1000 m is 20,000 cells of 5 cm
-// per side. A typo such as 5000 for 500 otherwise runs until memory is gone.
-inline constexpr double kMaxWorldSide_m = 1000.0;
+// The largest side a generated world may have: 500 m is 10,000 cells of 5 cm
+// per side, the largest world of the scaling measurement (docs/RESULTS.md,
+// section d). At 1000 m a 5 s exploration needed 13.6 GB and the museum and
+// frontier-bench ran out of memory (measured 2026-12-03).
+inline constexpr double kMaxWorldSide_m = 500.0;
 
 // Parses "W" (a square W x W) or "WxH", metres, e.g. "100" or "160x100".
 // Throws InputError naming 'text' unless both are finite numbers > 0 and at

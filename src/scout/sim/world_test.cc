@@ -150,12 +150,12 @@ TEST(MakeWorld, SizeOfAMapFileIsAnInputError) {
 }
 
 TEST(ParseWorldSize, SidesUpToTheLimitAreAccepted) {
-  EXPECT_DOUBLE_EQ(ParseWorldSize("1000x20").width_m, kMaxWorldSide_m);
+  EXPECT_DOUBLE_EQ(ParseWorldSize("500x20").width_m, kMaxWorldSide_m);
   try {
-    ParseWorldSize("5000");
+    ParseWorldSize("1000");
     FAIL() << "no error";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("at most 1000 m"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("at most 500 m"), std::string::npos) << e.what();
   }
 }
 
