@@ -92,6 +92,13 @@ TEST_F(ScoutCli, BadInputsNameWhatIsWrongAndLeaveNoOutputs) {
   r = RunScout("frontier-bench --strategies dfd,magic --world office" + o);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find("'magic'"), std::string::npos) << r.output;
+  for (const std::string list : {"exact,", ",exact", "full,,exact", ","}) {
+    r = RunScout("frontier-bench --strategies " + list + " --world office" + o);
+    EXPECT_EQ(r.exit_code, 2) << list;
+    EXPECT_NE(r.output.find("--strategies '" + list + "': expected comma-separated names"),
+              std::string::npos)
+        << r.output;
+  }
   r = RunScout("frontier-bench --strategies bfs --picture-strategy exact --world office" + o);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(

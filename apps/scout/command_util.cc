@@ -54,12 +54,17 @@ CLI::Validator NonNegativeFiniteNumber(double max) {
       "NONNEGATIVE");
 }
 
-std::vector<std::string> SplitList(const std::string& list) {
+std::vector<std::string> SplitList(const std::string& list, const std::string& option) {
   std::vector<std::string> items;
   std::stringstream ss(list);
   std::string item;
-  while (std::getline(ss, item, ',')) {
-    if (!item.empty()) items.push_back(item);
+  while (std::getline(ss, item, ',')) items.push_back(item);
+  // getline drops one trailing empty item: "exact," gives only "exact".
+  if (!list.empty() && list.back() == ',') items.emplace_back();
+  for (const std::string& name : items) {
+    if (name.empty()) {
+      throw InputError(option + " '" + list + "': expected comma-separated names, none empty");
+    }
   }
   return items;
 }

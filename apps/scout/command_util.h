@@ -27,8 +27,10 @@ CLI::Validator NonNegativeInteger(uint64_t max = std::numeric_limits<uint64_t>::
 // DBL_MAX.
 CLI::Validator NonNegativeFiniteNumber(double max = std::numeric_limits<double>::max());
 
-// Splits a comma-separated list, dropping empty items.
-std::vector<std::string> SplitList(const std::string& list);
+// Splits the comma-separated list given as 'option'. Throws InputError naming
+// the option when an item is empty ("exact,", ",exact", "full,,exact"): a
+// name left out by a typo must not pass silently.
+std::vector<std::string> SplitList(const std::string& list, const std::string& option);
 
 // The strategy whose frontier frontiers.png shows: 'requested' when given,
 // else exact when it runs, else the first of 'strategies'. Throws InputError

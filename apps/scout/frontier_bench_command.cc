@@ -55,7 +55,7 @@ int RunFrontierBench(const FrontierBenchArgs& args) {
   if (args.epsilon_m) {
     config.frontier.epsilon_m = *args.epsilon_m;
   }
-  const std::vector<std::string> strategies = SplitList(args.strategies);
+  const std::vector<std::string> strategies = SplitList(args.strategies, "--strategies");
   // Validates options and names before any long work or any output.
   frontier::FrontierEngine engine(config.frontier, strategies, /*evaluate=*/!args.no_reference);
   const std::string picture_strategy = PictureStrategy(args.picture_strategy, strategies, engine);

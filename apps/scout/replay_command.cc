@@ -177,7 +177,7 @@ int RunReplay(const ReplayArgs& args) {
   io::ScoutConfig config = LoadConfigOrDefaults(args.config_file);
   if (args.synchronous) config.slam.pose_graph.synchronous = true;
   // Validates options and names before any long work or any output.
-  const std::vector<std::string> strategies = SplitList(args.strategies);
+  const std::vector<std::string> strategies = SplitList(args.strategies, "--strategies");
   frontier::FrontierEngine engine(config.frontier, strategies, /*evaluate=*/true);
   const std::string picture_strategy = PictureStrategy(args.picture_strategy, strategies, engine);
 
