@@ -86,9 +86,12 @@ TEST_F(ExploreCli, BadInputsNameWhatIsWrongAndLeaveNoOutputs) {
   EXPECT_EQ(r.exit_code, 2);
   r = RunScout("explore --goals random" + rooms + o);
   EXPECT_EQ(r.exit_code, 2);
-  r = RunScout("explore --max-sim-time -5" + rooms + o);
-  EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.output.find("--max-sim-time"), std::string::npos) << r.output;
+  for (const std::string bad : {"-5", "inf", "nan"}) {
+    r = RunScout("explore --max-sim-time " + bad + rooms + o);
+    EXPECT_EQ(r.exit_code, 2) << bad;
+    EXPECT_NE(r.output.find("--max-sim-time: expected a positive finite number"), std::string::npos)
+        << r.output;
+  }
   scout::WriteTextFileAtomically(dir_ / "contradictory.yaml",
                                  "explore:\n  frontier_inflation_radius_m: 0.2\n");
   r = RunScout("explore --config " + (dir_ / "contradictory.yaml").string() + rooms + o);

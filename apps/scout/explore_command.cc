@@ -55,8 +55,9 @@ exploration::ExplorationOptions MakeOptions(const ExploreArgs& args) {
   o.explore.strategy = args.strategy;
   o.explore.goal_policy = args.goals;
   if (args.max_sim_time_s) {
-    if (!(*args.max_sim_time_s > 0.0)) {
-      throw InputError("--max-sim-time: expected a positive number of seconds");
+    if (!(*args.max_sim_time_s > 0.0) || !std::isfinite(*args.max_sim_time_s)) {
+      throw InputError("--max-sim-time: expected a positive finite number of seconds, got " +
+                       std::to_string(*args.max_sim_time_s));
     }
     o.explore.max_sim_time_s = *args.max_sim_time_s;
   }

@@ -257,6 +257,26 @@ TEST_F(ReplayCli, BadInputIsAClearErrorWithoutPartialOutputs) {
   EXPECT_FALSE(fs::exists(out / "summary.json"));
 }
 
+TEST_F(ReplayCli, AReferenceThatStandsStillIsNamedInAWarning) {
+  // Every scan's reference pose at the origin (the scans are 0.4 s apart from 100 s).
+  {
+    std::ofstream tum(Dir() / "still.tum");
+    for (int i = 0; i < 60; ++i) tum << 100.0 + 0.4 * i << " 0 0 0 0 0 0 1\n";
+  }
+  const Result r =
+      RunScout("replay " + Log() + " --quiet --synchronous --max-scans 60 --reference " +
+               (Dir() / "still.tum").string() + " --out " + (Dir() / "still").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("still.tum: the reference poses matched to the"), std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("measure no reference"), std::string::npos) << r.output;
+  // A moving reference gives no such warning.
+  const Result moving = RunScout("replay " + Log() + " --quiet --synchronous --max-scans 60 " +
+                                 "--reference " + Log() + " --out " + (Dir() / "moving").string());
+  ASSERT_EQ(moving.exit_code, 0) << moving.output;
+  EXPECT_EQ(moving.output.find("measure no reference"), std::string::npos) << moving.output;
+}
+
 TEST_F(ReplayCli, ARunIntoAUsedDirectoryLeavesNoEarlierOutputBehind) {
   const fs::path out = Dir() / "reused";
   const std::string replay = "replay " + Log() + " --quiet --synchronous --max-scans 40 ";

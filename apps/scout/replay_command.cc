@@ -92,6 +92,29 @@ std::vector<io::PosePair> PairNodesWithReference(const io::ScanReference& refere
   return pairs;
 }
 
+// A reference that does not move (a log whose scan poses are all zero, not
+// corrected poses) gives an ATE that measures only the estimate's own extent:
+// say so rather than let the figure pass for an accuracy.
+void WarnIfReferenceStandsStill(const std::vector<io::PosePair>& pairs,
+                                const std::string& reference_file) {
+  if (pairs.empty()) return;
+  double reference_extent_m = 0.0, estimate_extent_m = 0.0;
+  for (const io::PosePair& p : pairs) {
+    reference_extent_m = std::max(
+        reference_extent_m, (p.reference.translation() - pairs[0].reference.translation()).norm());
+    estimate_extent_m = std::max(
+        estimate_extent_m, (p.estimate.translation() - pairs[0].estimate.translation()).norm());
+  }
+  constexpr double kStillM = 0.01;
+  constexpr double kMovedM = 1.0;
+  if (reference_extent_m < kStillM && estimate_extent_m > kMovedM) {
+    std::cerr << "scout: warning: " << reference_file << ": the reference poses matched to the "
+              << pairs.size() << " nodes stay within " << kStillM * 100 << " cm of the first while "
+              << "the estimate moves " << std::fixed << std::setprecision(1) << estimate_extent_m
+              << " m; the ATE and RPE below measure no reference\n";
+  }
+}
+
 // Reference-free local accuracy (io::MeasureScanConsistency) of the nodes,
 // with each node's scan filtered as local SLAM filters it. With a reference,
 // measured on the nodes it pairs with, for the estimate and the reference.
@@ -285,6 +308,7 @@ int RunReplay(const ReplayArgs& args) {
   std::vector<io::PosePair> reference_pairs;
   if (reference) {
     reference_pairs = PairNodesWithReference(*reference, nodes, node_scans);
+    WarnIfReferenceStandsStill(reference_pairs, args.reference);
     const io::TrajectoryErrors errors = io::ComputeTrajectoryErrors(reference_pairs);
     summary["reference"] = ReferenceSummary(errors, *reference);
     summary["reference"]["file"] = args.reference;
