@@ -27,6 +27,10 @@ int RunReport(const ReportArgs& args) {
   // Read everything before creating anything, so a bad directory is left alone.
   const std::vector<report::ReportFile> files = report::BuildRunReport(args.dir);
   io::OutputDirectory out(args.dir, io::OutputDirectory::Mode::kAddFiles);
+  // The report is its page and figures: figures an earlier report drew from
+  // files since removed go with it.
+  out.ReplaceEarlier("report.html");
+  out.ReplaceEarlier("figures/");
   for (const report::ReportFile& file : files) {
     WriteTextFileAtomically(out.Stage(file.name), file.content);
   }

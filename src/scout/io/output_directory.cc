@@ -133,6 +133,10 @@ OutputDirectory::~OutputDirectory() {
   }
 }
 
+void OutputDirectory::ReplaceEarlier(const std::string& prefix) {
+  replaced_prefixes_.push_back(prefix);
+}
+
 std::filesystem::path OutputDirectory::Stage(const std::string& name) {
   names_.push_back(name);
   // Names may hold subdirectories ("figures/a.svg"); the writer expects them.
@@ -154,7 +158,10 @@ void OutputDirectory::Commit() {
   std::vector<std::string> manifest = names_;
   for (const std::string& name : earlier) {
     if (Contains(manifest, name) || !IsSafeName(name)) continue;
-    if (mode_ == Mode::kAddFiles) {
+    const bool replaced =
+        std::any_of(replaced_prefixes_.begin(), replaced_prefixes_.end(),
+                    [&name](const std::string& prefix) { return name.rfind(prefix, 0) == 0; });
+    if (mode_ == Mode::kAddFiles && !replaced) {
       manifest.push_back(name);
       continue;
     }

@@ -45,6 +45,10 @@ class OutputDirectory {
   // Returns where to write output 'name' now; registers it for Commit().
   // 'name' may name a subdirectory ("figures/a.svg"), created as needed.
   std::filesystem::path Stage(const std::string& name);
+  // kAddFiles: the earlier files whose names start with 'prefix' are this
+  // commit's to replace as well (a report's "figures/": a figure it no
+  // longer draws must not stay beside the new ones).
+  void ReplaceEarlier(const std::string& prefix);
   // Moves every staged file into the directory, then (kReplaceRun) removes
   // the files of the manifest that were not staged, and records the
   // manifest. Throws InputError on failure.
@@ -60,6 +64,7 @@ class OutputDirectory {
   bool committed_ = false;  // Commit() finished
   std::filesystem::path staging_;
   std::vector<std::string> names_;
+  std::vector<std::string> replaced_prefixes_;
 };
 
 }  // namespace scout::io

@@ -123,6 +123,17 @@ TEST(OutputDirectory, AddedFilesKeepTheRunAndAreRemovedByTheNextRun) {
   EXPECT_EQ(Listing(dir), (std::vector<std::string>{"map.png", "report.html", "summary.json"}));
   CommitRun(dir, {"summary.json"}, "rerun");
   EXPECT_EQ(Listing(dir), std::vector<std::string>{"summary.json"});
+  // An addition that replaces its own earlier files ("figures/") removes the
+  // ones it does not rewrite, and nothing else.
+  CommitRun(dir, {"figures/a.svg", "figures/b.svg"}, "report", OutputDirectory::Mode::kAddFiles);
+  {
+    OutputDirectory out(dir, OutputDirectory::Mode::kAddFiles);
+    out.ReplaceEarlier("figures/");
+    WriteTextFileAtomically(out.Stage("figures/a.svg"), "again");
+    out.Commit();
+  }
+  EXPECT_EQ(Listing(dir), (std::vector<std::string>{"figures", "summary.json"}));
+  EXPECT_EQ(Listing(dir / "figures"), std::vector<std::string>{"a.svg"});
   fs::remove_all(dir);
 }
 
