@@ -52,18 +52,17 @@ Manifest ReadManifest(const std::filesystem::path& dir) {
   return manifest;
 }
 
-// True if 'path' lies inside 'dir' (at any depth), symbolic links resolved.
-bool IsInside(const std::filesystem::path& path, const std::filesystem::path& dir) {
+// True if 'path' lies where a run's outputs go: directly in 'dir', or in
+// its figures/ (symbolic links resolved). A dataset deeper down, as in
+// `--out .` with data/x.log, is out of a run's reach.
+bool IsWhereOutputsGo(const std::filesystem::path& path, const std::filesystem::path& dir) {
   std::error_code ec;
   const std::filesystem::path file = std::filesystem::weakly_canonical(path, ec);
   if (ec) return false;
   const std::filesystem::path root = std::filesystem::weakly_canonical(dir, ec);
   if (ec) return false;
-  for (std::filesystem::path p = file.parent_path(); !p.empty(); p = p.parent_path()) {
-    if (p == root) return true;
-    if (p == p.parent_path()) break;
-  }
-  return false;
+  const std::filesystem::path parent = file.parent_path();
+  return parent == root || parent == root / "figures";
 }
 
 // Only plain relative names below the directory: a manifest edited by hand
@@ -93,7 +92,7 @@ OutputDirectory::OutputDirectory(const std::filesystem::path& dir, Mode mode,
     command_ = earlier.command;
   } else {
     for (const std::filesystem::path& input : inputs) {
-      if (!input.empty() && std::filesystem::exists(input, ec) && IsInside(input, dir_)) {
+      if (!input.empty() && std::filesystem::exists(input, ec) && IsWhereOutputsGo(input, dir_)) {
         throw InputError("output directory '" + dir_.string() + "' holds the input '" +
                          input.string() + "', which the run's outputs could replace or remove; " +
                          "choose another --out");

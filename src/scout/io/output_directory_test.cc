@@ -162,8 +162,14 @@ TEST(OutputDirectory, AnotherCommandsRunOrAnInputInsideIsRefusedBeforeAnythingIs
       << e;
   e = error_of("explore", {dir / "." / "sensor.log"});
   EXPECT_NE(e.find("holds the input"), std::string::npos) << e;
-  // Inputs elsewhere, absent ones and the same command are fine.
-  EXPECT_EQ(error_of("explore", {dir.parent_path() / "elsewhere.log", dir / "absent.log"}), "");
+  // Inputs elsewhere (below the directory's own subdirectories included),
+  // absent ones and the same command are fine.
+  fs::create_directories(dir / "data");
+  WriteTextFileAtomically(dir / "data" / "x.log", "FLASER ...");
+  EXPECT_EQ(error_of("explore", {dir.parent_path() / "elsewhere.log", dir / "absent.log",
+                                 dir / "data" / "x.log"}),
+            "");
+  fs::remove_all(dir / "data");
   EXPECT_EQ(Listing(dir), (std::vector<std::string>{"report.html", "sensor.log"}));
   fs::remove_all(dir);
 }
