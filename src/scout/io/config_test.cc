@@ -125,27 +125,24 @@ TEST_F(ConfigTest, SlamValuesOverrideDefaultsAndErrorsNameTheKey) {
 
 TEST_F(ConfigTest, ARepeatedOrNonScalarKeyIsAnError) {
   // yaml-cpp keeps both entries of a repeated key; only the first would be read.
-  std::string e = ErrorOf("frontier:\n  epsilon_m: 0.1\n  epsilon_m: 0.2\n");
-  EXPECT_NE(e.find("options.yaml:3"), std::string::npos) << e;
-  EXPECT_NE(e.find("'frontier.epsilon_m' given twice"), std::string::npos) << e;
-  e = ErrorOf("frontier:\n  epsilon_m: 0.1\nfrontier:\n  epsilon_m: 0.3\n");
-  EXPECT_NE(e.find("'frontier' given twice"), std::string::npos) << e;
-  e = ErrorOf("frontier:\n  ? [a, b]\n  : 1\n");
-  EXPECT_NE(e.find("expected option names as keys"), std::string::npos) << e;
+  ExpectErrors(
+      {{"frontier:\n  epsilon_m: 0.1\n  epsilon_m: 0.2\n", "options.yaml:3"},
+       {"frontier:\n  epsilon_m: 0.1\n  epsilon_m: 0.2\n", "'frontier.epsilon_m' given twice"},
+       {"frontier:\n  epsilon_m: 0.1\nfrontier:\n  epsilon_m: 0.3\n", "'frontier' given twice"},
+       {"frontier:\n  ? [a, b]\n  : 1\n", "expected option names as keys"}});
 }
 
 TEST_F(ConfigTest, SyntheticOptionsAreCheckedWhenTheFileLoads) {
-  std::string e = ErrorOf("synthetic:\n  insertion:\n    hit_probability: 0.3\n");
-  EXPECT_NE(e.find("synthetic.insertion.hit_probability"), std::string::npos) << e;
-  e = ErrorOf("synthetic:\n  corrections:\n    pull_decay_per_submap: 1.5\n");
-  EXPECT_NE(e.find("options.yaml: synthetic.corrections.pull_decay_per_submap"), std::string::npos)
-      << e;
-  e = ErrorOf("synthetic:\n  tour:\n    waypoint_clearance_m: 0.1\n");
-  EXPECT_NE(e.find("options.yaml: synthetic.tour.waypoint_clearance_m"), std::string::npos) << e;
-  e = ErrorOf("synthetic:\n  lidar:\n    range_min_m: 9\n");
-  EXPECT_NE(e.find("options.yaml: synthetic.lidar.range_min_m"), std::string::npos) << e;
-  e = ErrorOf("synthetic:\n  range_filter:\n    max_range_m: 0.5\n    min_range_m: 1\n");
-  EXPECT_NE(e.find("options.yaml: synthetic.range_filter.max_range_m"), std::string::npos) << e;
+  ExpectErrors(
+      {{"synthetic:\n  insertion:\n    hit_probability: 0.3\n",
+        "synthetic.insertion.hit_probability"},
+       {"synthetic:\n  corrections:\n    pull_decay_per_submap: 1.5\n",
+        "options.yaml: synthetic.corrections.pull_decay_per_submap"},
+       {"synthetic:\n  tour:\n    waypoint_clearance_m: 0.1\n",
+        "options.yaml: synthetic.tour.waypoint_clearance_m"},
+       {"synthetic:\n  lidar:\n    range_min_m: 9\n", "options.yaml: synthetic.lidar.range_min_m"},
+       {"synthetic:\n  range_filter:\n    max_range_m: 0.5\n    min_range_m: 1\n",
+        "options.yaml: synthetic.range_filter.max_range_m"}});
 }
 
 TEST_F(ConfigTest, ZeroTurnsOffWhatTheModulesAllowToBeOff) {

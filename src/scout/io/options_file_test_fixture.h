@@ -9,6 +9,8 @@
 #include <filesystem>
 #include <random>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "scout/common/atomic_file.h"
 #include "scout/common/error.h"
@@ -39,6 +41,14 @@ class OptionsFileTest : public ::testing::Test {
       return e.what();
     }
     return "";
+  }
+  // Expects loading each options text to fail with a message holding its
+  // paired text.
+  void ExpectErrors(const std::vector<std::pair<std::string, std::string>>& text_and_message) {
+    for (const auto& [text, message] : text_and_message) {
+      const std::string e = ErrorOf(text);
+      EXPECT_NE(e.find(message), std::string::npos) << text << ": " << e;
+    }
   }
 
   std::filesystem::path dir_;
