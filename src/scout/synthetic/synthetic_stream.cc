@@ -53,10 +53,6 @@ void Validate(const SyntheticStreamOptions& o) {
   Require(o.optimize_every_n_scans >= 1, "optimize_every_n_scans", o.optimize_every_n_scans,
           ">= 1");
   Require(o.max_scans >= 0, "max_scans", o.max_scans, ">= 0");
-  Require(o.insertion.hit_probability > 0.5 && o.insertion.hit_probability < 1.0,
-          "insertion.hit_probability", o.insertion.hit_probability, "in (0.5, 1)");
-  Require(o.insertion.miss_probability > 0.0 && o.insertion.miss_probability < 0.5,
-          "insertion.miss_probability", o.insertion.miss_probability, "in (0, 0.5)");
   Require(o.range_filter.min_range_m >= 0.0, "range_filter.min_range_m", o.range_filter.min_range_m,
           ">= 0");
   Require(o.range_filter.max_range_m > o.range_filter.min_range_m, "range_filter.max_range_m",

@@ -48,7 +48,8 @@ struct SyntheticStreamOptions {
 };
 
 // Throws InputError naming the first bad option ("synthetic.<key>"), the
-// tour's, corrections', lidar's and insertion's included.
+// tour's, corrections', lidar's and range filter's included. (The insertion
+// probabilities are the inserter's to check; io's reader names them.)
 void Validate(const SyntheticStreamOptions& options);
 
 struct StreamStats {
