@@ -6,6 +6,7 @@ static_assert(__cplusplus == 201703L, "compile ros_bag_reader.cc with scout_ros1
 
 #include <nav_msgs/Odometry.h>
 #include <ros/exception.h>
+#include <ros/serialization.h>
 #include <rosbag/bag.h>
 #include <rosbag/exceptions.h>
 #include <rosbag/view.h>
@@ -13,11 +14,13 @@ static_assert(__cplusplus == 201703L, "compile ros_bag_reader.cc with scout_ros1
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <optional>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "scout/common/error.h"
 #include "scout/io/dataset_warnings.h"
@@ -90,6 +93,68 @@ std::optional<BagTopic> ChooseTopic(const std::vector<BagTopic>& topics, const s
 // Odometry farther out than this (metres) is corrupt: a submap would have to
 // grow to include it.
 constexpr double kMaxCoordinateM = 1e6;
+
+// Walks a message's serialised bytes for the lengths of its variable-size
+// fields: ros deserialisation sizes a string or array from its length field
+// before it finds the message too short, so a corrupt length of 1e9 would
+// first allocate gigabytes.
+class LengthCheck {
+ public:
+  explicit LengthCheck(const std::vector<uint8_t>& bytes) : bytes_(bytes) {}
+  // Skips 'count' bytes of fixed-size fields.
+  void Fixed(uint64_t count) { Need(count); }
+  // Skips a length-prefixed string or array of 'element_bytes' elements.
+  void Variable(const char* field, uint64_t element_bytes) {
+    if (!problem_.empty()) return;
+    Need(4);
+    if (!problem_.empty()) return;
+    uint32_t length = 0;
+    for (int k = 3; k >= 0; --k) length = (length << 8) | bytes_[offset_ - 4 + k];
+    Need(element_bytes * length);
+    if (!problem_.empty()) {
+      problem_ = std::string(field) + " length " + std::to_string(length) + " runs past the " +
+                 std::to_string(bytes_.size()) + "-byte message";
+    }
+  }
+  const std::string& problem() const { return problem_; }
+
+ private:
+  void Need(uint64_t count) {
+    if (!problem_.empty()) return;
+    if (count > bytes_.size() - offset_) {
+      problem_ = "message too short";
+      return;
+    }
+    offset_ += count;
+  }
+  const std::vector<uint8_t>& bytes_;
+  uint64_t offset_ = 0;
+  std::string problem_;
+};
+
+// The message's bytes as the bag stores them.
+std::vector<uint8_t> SerialisedBytes(const rosbag::MessageInstance& message) {
+  std::vector<uint8_t> bytes(message.size());
+  ros::serialization::OStream stream(bytes.data(), static_cast<uint32_t>(bytes.size()));
+  message.write(stream);
+  return bytes;
+}
+
+// What is wrong with the lengths in a LaserScan's or an Odometry's bytes, or "".
+std::string LengthProblem(const rosbag::MessageInstance& message, bool is_scan) {
+  const std::vector<uint8_t> bytes = SerialisedBytes(message);
+  LengthCheck check(bytes);
+  check.Fixed(4 + 8);  // header: seq, stamp
+  check.Variable("header.frame_id", 1);
+  if (is_scan) {
+    check.Fixed(7 * 4);  // angle_min ... range_max
+    check.Variable("ranges", 4);
+    check.Variable("intensities", 4);
+  } else {
+    check.Variable("child_frame_id", 1);
+  }
+  return check.problem();
+}
 
 double StampOrBagTime(const ros::Time& stamp, const ros::Time& bag_time) {
   return stamp.isZero() ? bag_time.toSec() : stamp.toSec();
@@ -200,7 +265,12 @@ void ReadPlainBag(const fs::path& bag_path, const std::string& source,
     // A message whose bytes are corrupt (a length field beyond the message)
     // is skipped; the chunks around it still read.
     try {
-      if (message.getTopic() == scan_topic->name) {
+      const bool is_scan = message.getTopic() == scan_topic->name;
+      if (const std::string problem = LengthProblem(message, is_scan); !problem.empty()) {
+        converter.SkipCorrupt(message.getTopic(), message.getTime(), problem);
+        continue;
+      }
+      if (is_scan) {
         if (auto scan = message.instantiate<sensor_msgs::LaserScan>()) {
           converter.AddScan(*scan, message.getTime());
         }

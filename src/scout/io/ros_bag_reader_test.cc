@@ -240,7 +240,11 @@ TEST(RosBagReader, UnusableAnglesOdometryAndCorruptMessagesAreSkippedWithWarning
   pattern.append(reinterpret_cast<const char*>(&first), sizeof(first));
   const size_t at = bytes.find(pattern);
   ASSERT_NE(at, std::string::npos);
-  bytes[at] = 100;
+  // 0x3fffffff beams: deserialising would first allocate 4 GiB.
+  bytes[at] = '\xff';
+  bytes[at + 1] = '\xff';
+  bytes[at + 2] = '\xff';
+  bytes[at + 3] = '\x3f';
   std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
 
   const Dataset dataset = ReadRosBag(path);
@@ -250,7 +254,9 @@ TEST(RosBagReader, UnusableAnglesOdometryAndCorruptMessagesAreSkippedWithWarning
   EXPECT_DOUBLE_EQ(dataset.odometry[1].time_s, 3.0);
   EXPECT_TRUE(AnyWarningContains(dataset, "LaserScan at t=2 s has angle_min"));
   EXPECT_TRUE(AnyWarningContains(dataset, "LaserScan at t=3 s has angle_min nan"));
-  EXPECT_TRUE(AnyWarningContains(dataset, "message on /scan at bag time 4 s is corrupt"));
+  EXPECT_TRUE(AnyWarningContains(dataset,
+                                 "message on /scan at bag time 4 s is corrupt (ranges "
+                                 "length 1073741823 runs past the"));
   EXPECT_TRUE(AnyWarningContains(dataset, "Odometry at t=2 s at (1000000000000, 0); dropped"));
 }
 
