@@ -6,6 +6,7 @@ static_assert(__cplusplus == 201703L, "compile ros_bag_reader.cc with scout_ros1
 
 #include <nav_msgs/Odometry.h>
 #include <ros/exception.h>
+#include <ros/message_traits.h>
 #include <ros/serialization.h>
 #include <rosbag/bag.h>
 #include <rosbag/exceptions.h>
@@ -25,6 +26,71 @@ static_assert(__cplusplus == 201703L, "compile ros_bag_reader.cc with scout_ros1
 #include "scout/common/error.h"
 #include "scout/io/dataset_warnings.h"
 #include "scout/io/gzip_file.h"
+
+// Length probes: read through rosbag like messages, they walk a LaserScan's
+// or an Odometry's serialised fields for the lengths of its strings and
+// arrays only. ros deserialisation sizes a string or array from its length
+// field before it finds the message too short, so a corrupt length of 1e9
+// would first allocate gigabytes; a probe names the field instead.
+namespace scout::io::bag_probe {
+struct ScanLengths {
+  std::string problem;  // empty: every length fits the message
+};
+struct OdometryLengths {
+  std::string problem;
+};
+
+// Skips a length-prefixed string or array of 'element_bytes' elements, or
+// records why it does not fit in what is left of the message.
+template <typename Stream>
+bool SkipVariable(Stream& stream, const char* field, uint64_t element_bytes, std::string* problem) {
+  uint32_t length = 0;
+  stream.next(length);
+  if (element_bytes * length > stream.getLength()) {
+    *problem = std::string(field) + " length " + std::to_string(length) + " runs past the message";
+    return false;
+  }
+  stream.advance(static_cast<uint32_t>(element_bytes * length));
+  return true;
+}
+}  // namespace scout::io::bag_probe
+
+namespace ros::message_traits {
+// "*": rosbag instantiates a probe from a message of any type.
+template <>
+struct MD5Sum<scout::io::bag_probe::ScanLengths> {
+  static const char* value() { return "*"; }
+  static const char* value(const scout::io::bag_probe::ScanLengths&) { return "*"; }
+};
+template <>
+struct MD5Sum<scout::io::bag_probe::OdometryLengths> {
+  static const char* value() { return "*"; }
+  static const char* value(const scout::io::bag_probe::OdometryLengths&) { return "*"; }
+};
+}  // namespace ros::message_traits
+
+namespace ros::serialization {
+template <>
+struct Serializer<scout::io::bag_probe::ScanLengths> {
+  template <typename Stream>
+  static void read(Stream& stream, scout::io::bag_probe::ScanLengths& m) {
+    stream.advance(4 + 8);  // header: seq, stamp
+    if (!scout::io::bag_probe::SkipVariable(stream, "header.frame_id", 1, &m.problem)) return;
+    stream.advance(7 * 4);  // angle_min ... range_max
+    if (!scout::io::bag_probe::SkipVariable(stream, "ranges", 4, &m.problem)) return;
+    scout::io::bag_probe::SkipVariable(stream, "intensities", 4, &m.problem);
+  }
+};
+template <>
+struct Serializer<scout::io::bag_probe::OdometryLengths> {
+  template <typename Stream>
+  static void read(Stream& stream, scout::io::bag_probe::OdometryLengths& m) {
+    stream.advance(4 + 8);
+    if (!scout::io::bag_probe::SkipVariable(stream, "header.frame_id", 1, &m.problem)) return;
+    scout::io::bag_probe::SkipVariable(stream, "child_frame_id", 1, &m.problem);
+  }
+};
+}  // namespace ros::serialization
 
 namespace scout::io {
 namespace {
@@ -93,68 +159,6 @@ std::optional<BagTopic> ChooseTopic(const std::vector<BagTopic>& topics, const s
 // Odometry farther out than this (metres) is corrupt: a submap would have to
 // grow to include it.
 constexpr double kMaxCoordinateM = 1e6;
-
-// Walks a message's serialised bytes for the lengths of its variable-size
-// fields: ros deserialisation sizes a string or array from its length field
-// before it finds the message too short, so a corrupt length of 1e9 would
-// first allocate gigabytes.
-class LengthCheck {
- public:
-  explicit LengthCheck(const std::vector<uint8_t>& bytes) : bytes_(bytes) {}
-  // Skips 'count' bytes of fixed-size fields.
-  void Fixed(uint64_t count) { Need(count); }
-  // Skips a length-prefixed string or array of 'element_bytes' elements.
-  void Variable(const char* field, uint64_t element_bytes) {
-    if (!problem_.empty()) return;
-    Need(4);
-    if (!problem_.empty()) return;
-    uint32_t length = 0;
-    for (int k = 3; k >= 0; --k) length = (length << 8) | bytes_[offset_ - 4 + k];
-    Need(element_bytes * length);
-    if (!problem_.empty()) {
-      problem_ = std::string(field) + " length " + std::to_string(length) + " runs past the " +
-                 std::to_string(bytes_.size()) + "-byte message";
-    }
-  }
-  const std::string& problem() const { return problem_; }
-
- private:
-  void Need(uint64_t count) {
-    if (!problem_.empty()) return;
-    if (count > bytes_.size() - offset_) {
-      problem_ = "message too short";
-      return;
-    }
-    offset_ += count;
-  }
-  const std::vector<uint8_t>& bytes_;
-  uint64_t offset_ = 0;
-  std::string problem_;
-};
-
-// The message's bytes as the bag stores them.
-std::vector<uint8_t> SerialisedBytes(const rosbag::MessageInstance& message) {
-  std::vector<uint8_t> bytes(message.size());
-  ros::serialization::OStream stream(bytes.data(), static_cast<uint32_t>(bytes.size()));
-  message.write(stream);
-  return bytes;
-}
-
-// What is wrong with the lengths in a LaserScan's or an Odometry's bytes, or "".
-std::string LengthProblem(const rosbag::MessageInstance& message, bool is_scan) {
-  const std::vector<uint8_t> bytes = SerialisedBytes(message);
-  LengthCheck check(bytes);
-  check.Fixed(4 + 8);  // header: seq, stamp
-  check.Variable("header.frame_id", 1);
-  if (is_scan) {
-    check.Fixed(7 * 4);  // angle_min ... range_max
-    check.Variable("ranges", 4);
-    check.Variable("intensities", 4);
-  } else {
-    check.Variable("child_frame_id", 1);
-  }
-  return check.problem();
-}
 
 double StampOrBagTime(const ros::Time& stamp, const ros::Time& bag_time) {
   return stamp.isZero() ? bag_time.toSec() : stamp.toSec();
@@ -266,7 +270,10 @@ void ReadPlainBag(const fs::path& bag_path, const std::string& source,
     // is skipped; the chunks around it still read.
     try {
       const bool is_scan = message.getTopic() == scan_topic->name;
-      if (const std::string problem = LengthProblem(message, is_scan); !problem.empty()) {
+      const std::string problem = is_scan
+                                      ? message.instantiate<bag_probe::ScanLengths>()->problem
+                                      : message.instantiate<bag_probe::OdometryLengths>()->problem;
+      if (!problem.empty()) {
         converter.SkipCorrupt(message.getTopic(), message.getTime(), problem);
         continue;
       }
