@@ -260,6 +260,36 @@ TEST(RosBagReader, UnusableAnglesOdometryAndCorruptMessagesAreSkippedWithWarning
   EXPECT_TRUE(AnyWarningContains(dataset, "Odometry at t=2 s at (1000000000000, 0); dropped"));
 }
 
+TEST(RosBagReader, ARecordDataLengthBeyondItsChunkDoesNotReadPastIt) {
+  const TestTempDirectory dir;
+  const fs::path path = dir.path() / "length.bag";
+  {
+    rosbag::Bag bag(path.string(), rosbag::bagmode::Write);
+    for (int i = 0; i < 3; ++i) bag.write("/scan", ros::Time(1.0 + i), Scan(1.0 + i, 3));
+  }
+  std::string bytes;
+  {
+    std::ifstream in(path, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  // A message record ends in its data length, then the data: seq (4 bytes),
+  // stamp (8), then frame_id "laser" with its length (5). The second
+  // message's data length becomes 2^31 - 1.
+  const std::string frame("\x05\x00\x00\x00laser", 9);
+  const size_t first = bytes.find(frame);
+  ASSERT_NE(first, std::string::npos);
+  const size_t second = bytes.find(frame, first + 1);
+  ASSERT_NE(second, std::string::npos);
+  // 69 bytes: 4 + 8 + (4 + 5) + 7 * 4 + (4 + 3 * 4) + 4.
+  ASSERT_EQ(bytes.substr(second - 16, 4), std::string("\x45\x00\x00\x00", 4));
+  const std::string huge("\xff\xff\xff\x7f", 4);
+  bytes.replace(second - 16, 4, huge);
+  std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
+  // Deserialising reads only the message's own fields: all three scans.
+  const Dataset dataset = ReadRosBag(path);
+  EXPECT_EQ(dataset.scans.size(), 3u);
+}
+
 TEST(RosBagReader, TruncatedOrCorruptBagIsAnErrorNamingTheFile) {
   const TestTempDirectory dir;
   const fs::path whole = WriteTestBag(dir.path() / "whole.bag");
