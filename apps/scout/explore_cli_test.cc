@@ -110,6 +110,28 @@ TEST_F(ExploreCli, BadInputsNameWhatIsWrongAndLeaveNoOutputs) {
   EXPECT_FALSE(fs::exists(out));
 }
 
+TEST_F(ExploreCli, AnInterruptedRunLeavesNothingBehind) {
+  // The office takes about a minute: interrupted once its output directory
+  // (made after the handler is installed) appears.
+  const fs::path out = dir_ / "interrupted";
+  const std::string script = "sh -c '" + std::string(SCOUT_BINARY) +
+                             " explore --world office --quiet --out " + out.string() +
+                             " & pid=$!; n=0; until [ -d " + out.string() +
+                             " ] || [ $n -ge 300 ]; do sleep 0.1; n=$((n+1)); done; " +
+                             "kill -INT $pid; wait $pid; echo exit=$?'";
+  std::string output;
+  FILE* pipe = popen((script + " 2>&1").c_str(), "r");
+  ASSERT_NE(pipe, nullptr);
+  char buffer[4096];
+  while (fgets(buffer, sizeof(buffer), pipe) != nullptr) output += buffer;
+  pclose(pipe);
+  EXPECT_NE(output.find("scout: interrupted by SIGINT; nothing written"), std::string::npos)
+      << output;
+  EXPECT_NE(output.find("exit=130"), std::string::npos) << output;
+  // The directory the run created goes with its staging directory.
+  EXPECT_FALSE(fs::exists(out));
+}
+
 TEST_F(ExploreCli, ExploresASmallMapAndWritesEveryOutput) {
   const fs::path out = dir_ / "out";
   const Result r = RunScout("explore --quiet --seed 2 --world " + (dir_ / "rooms.yaml").string() +

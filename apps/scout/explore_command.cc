@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "apps/scout/command_util.h"
+#include "apps/scout/interrupt.h"
 #include "apps/scout/report_command.h"
 #include "scout/common/atomic_file.h"
 #include "scout/common/error.h"
@@ -305,7 +306,8 @@ int RunExplore(const ExploreArgs& args) {
       PrintProgress(p, terminal);
     };
   }
-  const exploration::ExplorationResult result = loop.Run(progress, terminal ? 5.0 : 60.0);
+  const exploration::ExplorationResult result =
+      loop.Run(progress, terminal ? 5.0 : 60.0, ThrowIfInterrupted);
   if (terminal) std::cerr << "\n";
   const double wall_time_s = wall.ElapsedUs() * 1e-6;
 

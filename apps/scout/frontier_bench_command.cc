@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "apps/scout/command_util.h"
+#include "apps/scout/interrupt.h"
 #include "apps/scout/report_command.h"
 #include "scout/common/atomic_file.h"
 #include "scout/common/error.h"
@@ -70,6 +71,7 @@ int RunFrontierBench(const FrontierBenchArgs& args) {
   synthetic::SyntheticEventStream stream(world, config.synthetic, args.seed);
   int events_seen = 0;
   const synthetic::StreamStats stats = stream.Run([&](const events::SubmapEvent& event) {
+    ThrowIfInterrupted();
     engine.Apply(event);
     ++events_seen;
     if (terminal && events_seen % 200 == 0) {

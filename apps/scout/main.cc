@@ -1,6 +1,7 @@
 // scout: autonomous exploration with submap graph SLAM and reachable frontiers.
 // Exit codes: 0 success, 2 bad input (the message names the file/key/value),
-// 1 an unexpected internal failure.
+// 1 an unexpected internal failure, 128 + N when ended by signal N (SIGINT,
+// SIGTERM) with nothing written.
 
 #include <CLI/CLI.hpp>
 #include <exception>
@@ -9,6 +10,7 @@
 #include "apps/scout/compare_command.h"
 #include "apps/scout/explore_command.h"
 #include "apps/scout/frontier_bench_command.h"
+#include "apps/scout/interrupt.h"
 #include "apps/scout/replay_command.h"
 #include "apps/scout/report_command.h"
 #include "apps/scout/results_table_command.h"
@@ -42,6 +44,7 @@ int main(int argc, char** argv) {
     std::cerr << "scout: error: " << e.what() << " (see 'scout --help')\n";
     return 2;
   }
+  scout::apps::InstallInterruptHandler();
   try {
     if (bench->parsed()) return scout::apps::RunFrontierBench(bench_args);
     if (report->parsed()) return scout::apps::RunReport(report_args);
@@ -52,6 +55,9 @@ int main(int argc, char** argv) {
   } catch (const scout::InputError& e) {
     std::cerr << "scout: error: " << e.what() << "\n";
     return 2;
+  } catch (const scout::apps::Interrupted& e) {
+    std::cerr << "scout: " << e.what() << "; nothing written\n";
+    return 128 + e.signal_number();
   } catch (const std::exception& e) {
     std::cerr << "scout: internal error: " << e.what() << "\n";
     return 1;

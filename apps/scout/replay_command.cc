@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "apps/scout/command_util.h"
+#include "apps/scout/interrupt.h"
 #include "apps/scout/report_command.h"
 #include "scout/common/atomic_file.h"
 #include "scout/common/error.h"
@@ -248,6 +249,7 @@ int RunReplay(const ReplayArgs& args) {
            dataset.odometry[next_odometry].time_s <= scan.time_s) {
       builder.AddOdometry(dataset.odometry[next_odometry++]);
     }
+    ThrowIfInterrupted();
     builder.AddScan(scan);
     const bool report = (i + 1) % 500 == 0 || i + 1 == num_scans;
     if (report && !args.quiet) {

@@ -359,8 +359,8 @@ std::optional<Termination> ExplorationLoop::CheckTermination(
   return std::nullopt;
 }
 
-ExplorationResult ExplorationLoop::Run(const ProgressCallback& progress,
-                                       double progress_interval_s) {
+ExplorationResult ExplorationLoop::Run(const ProgressCallback& progress, double progress_interval_s,
+                                       const std::function<void()>& poll) {
   const ExploreOptions& e = options_.explore;
   FeedSensors();  // the readings of t = 0
   double next_sample_s = 0.0;
@@ -369,6 +369,7 @@ ExplorationResult ExplorationLoop::Run(const ProgressCallback& progress,
   double last_heading_rad = EstimatedPose().theta();
   bool started = false;
   while (true) {
+    if (poll) poll();
     const double t = robot_.sim_time_s();
     bool changed = MaybeUpdateMap(/*force=*/fused_map_.limits.num_cells() == 0);
     explore::ExploreStatus status;

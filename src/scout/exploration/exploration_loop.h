@@ -161,8 +161,10 @@ class ExplorationLoop {
 
   // Runs until a termination condition, then finishes SLAM (final
   // optimisation) and measures the final map. Calls 'progress' about every
-  // 'progress_interval_s' of sim time. Call once.
-  ExplorationResult Run(const ProgressCallback& progress = {}, double progress_interval_s = 10.0);
+  // 'progress_interval_s' of sim time, and 'poll' every control step (it may
+  // throw to abandon the run: a user's interrupt). Call once.
+  ExplorationResult Run(const ProgressCallback& progress = {}, double progress_interval_s = 10.0,
+                        const std::function<void()>& poll = {});
 
   // Call before Run().
   void set_scan_recorder(ScanRecorder recorder) { scan_recorder_ = std::move(recorder); }

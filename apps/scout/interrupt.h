@@ -1,0 +1,27 @@
+#ifndef SCOUT_APPS_SCOUT_INTERRUPT_H_
+#define SCOUT_APPS_SCOUT_INTERRUPT_H_
+
+#include <stdexcept>
+
+namespace scout::apps {
+
+// Thrown by ThrowIfInterrupted once SIGINT or SIGTERM arrived: the command
+// unwinds like on any error, so its staging directory (and an output
+// directory it created) is removed and nothing half-written stays.
+class Interrupted : public std::runtime_error {
+ public:
+  explicit Interrupted(int signal_number);
+  int signal_number() const { return signal_number_; }
+
+ private:
+  int signal_number_;
+};
+
+// SIGINT and SIGTERM set a flag that the long loops poll; a second one of
+// either ends the process at once, as without the handler.
+void InstallInterruptHandler();
+void ThrowIfInterrupted();
+
+}  // namespace scout::apps
+
+#endif  // SCOUT_APPS_SCOUT_INTERRUPT_H_
