@@ -16,6 +16,7 @@
 #include "apps/scout/report_command.h"
 #include "scout/common/atomic_file.h"
 #include "scout/common/error.h"
+#include "scout/common/input_limits.h"
 #include "scout/exploration/exploration_loop.h"
 #include "scout/frontier/stopwatch.h"
 #include "scout/io/carmen_log_writer.h"
@@ -37,10 +38,8 @@ Eigen::Vector2d ParseStart(const std::string& text) {
   std::istringstream in(text);
   double x = 0.0, y = 0.0;
   char comma = 0;
-  // Beyond 1000 km no map reaches (and the number would fill the message).
-  constexpr double kMaxStartM = 1e6;
   if (!(in >> x >> comma >> y) || comma != ',' || !(in >> std::ws).eof() ||
-      !(std::abs(x) <= kMaxStartM) || !(std::abs(y) <= kMaxStartM)) {
+      !(std::abs(x) <= kMaxInputCoordinateM) || !(std::abs(y) <= kMaxInputCoordinateM)) {
     throw InputError("--start '" + text + "': expected X,Y in metres, e.g. --start 2.5,-1");
   }
   return {x, y};

@@ -10,6 +10,7 @@
 
 #include "scout/common/atomic_file.h"
 #include "scout/common/error.h"
+#include "scout/common/input_limits.h"
 #include "scout/grid/image.h"
 
 namespace scout::grid {
@@ -139,10 +140,8 @@ Eigen::Vector2d ReadOrigin(const MapYaml& yaml) {
   if (!node.IsSequence() || node.size() != 3) yaml.FieldError("origin", node, expected);
   const double x = yaml.Number("origin", node[0], expected);
   const double y = yaml.Number("origin", node[1], expected);
-  // Beyond 1000 km the grid's cell arithmetic loses the map.
-  constexpr double kMaxOriginM = 1e6;
-  if (std::abs(x) > kMaxOriginM) yaml.FieldError("origin", node[0], "x within +-1e6 m");
-  if (std::abs(y) > kMaxOriginM) yaml.FieldError("origin", node[1], "y within +-1e6 m");
+  if (std::abs(x) > kMaxInputCoordinateM) yaml.FieldError("origin", node[0], "x within +-1e6 m");
+  if (std::abs(y) > kMaxInputCoordinateM) yaml.FieldError("origin", node[1], "y within +-1e6 m");
   const double yaw = yaml.Number("origin", node[2], expected);
   // A rotated map would need resampling onto Scout's axis-aligned grid.
   if (std::abs(yaw) > kYawTolerance) {

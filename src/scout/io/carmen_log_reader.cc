@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "scout/common/error.h"
+#include "scout/common/input_limits.h"
 #include "scout/io/dataset_warnings.h"
 #include "scout/io/gzip_file.h"
 
@@ -38,9 +39,6 @@ std::vector<std::string_view> SplitFields(std::string_view line) {
   return fields;
 }
 
-// Coordinates (m), angles (rad) and scan parameters beyond this are corrupt:
-// 1000 km.
-constexpr double kMaxCoordinate = 1e6;
 // Times (s) beyond this are corrupt: about the year 5100 in Unix time.
 constexpr double kMaxTimeS = 1e11;
 
@@ -215,7 +213,7 @@ class CarmenParser {
   struct Field {
     std::size_t index;
     double* value;
-    double max_magnitude = kMaxCoordinate;
+    double max_magnitude = kMaxInputCoordinateM;  // also angles (rad) and scan parameters
   };
 
   // Parses the fields at the given indices as finite numbers within their

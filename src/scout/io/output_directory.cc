@@ -88,6 +88,7 @@ OutputDirectory::OutputDirectory(const std::filesystem::path& dir, Mode mode,
     : dir_(dir), mode_(mode), command_(command) {
   std::error_code ec;
   const Manifest earlier = ReadManifest(dir_);
+  earlier_names_ = earlier.names;
   if (mode_ == Mode::kAddFiles) {
     command_ = earlier.command;
   } else {
@@ -145,7 +146,6 @@ std::filesystem::path OutputDirectory::Stage(const std::string& name) {
 }
 
 void OutputDirectory::Commit() {
-  const std::vector<std::string> earlier = ReadManifest(dir_).names;
   for (const std::string& name : names_) {
     std::error_code ec;
     std::filesystem::create_directories((dir_ / name).parent_path(), ec);
@@ -155,7 +155,7 @@ void OutputDirectory::Commit() {
     }
   }
   std::vector<std::string> manifest = names_;
-  for (const std::string& name : earlier) {
+  for (const std::string& name : earlier_names_) {
     if (Contains(manifest, name) || !IsSafeName(name)) continue;
     const bool replaced =
         std::any_of(replaced_prefixes_.begin(), replaced_prefixes_.end(),

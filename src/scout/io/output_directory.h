@@ -64,6 +64,7 @@ class OutputDirectory {
   bool committed_ = false;  // Commit() finished
   std::filesystem::path staging_;
   std::vector<std::string> names_;
+  std::vector<std::string> earlier_names_;  // the manifest's when the run began
   std::vector<std::string> replaced_prefixes_;
 };
 

@@ -24,6 +24,7 @@ static_assert(__cplusplus == 201703L, "compile ros_bag_reader.cc with scout_ros1
 #include <vector>
 
 #include "scout/common/error.h"
+#include "scout/common/input_limits.h"
 #include "scout/io/dataset_warnings.h"
 #include "scout/io/gzip_file.h"
 
@@ -156,10 +157,6 @@ std::optional<BagTopic> ChooseTopic(const std::vector<BagTopic>& topics, const s
   return candidates.front();
 }
 
-// Odometry farther out than this (metres) is corrupt: a submap would have to
-// grow to include it.
-constexpr double kMaxCoordinateM = 1e6;
-
 double StampOrBagTime(const ros::Time& stamp, const ros::Time& bag_time) {
   return stamp.isZero() ? bag_time.toSec() : stamp.toSec();
 }
@@ -217,8 +214,8 @@ class BagConverter {
     }
     const geometry_msgs::Pose& pose = message.pose.pose;
     const double yaw = YawOf(pose.orientation);
-    if (!(std::abs(pose.position.x) <= kMaxCoordinateM) ||
-        !(std::abs(pose.position.y) <= kMaxCoordinateM) || !std::isfinite(yaw)) {
+    if (!(std::abs(pose.position.x) <= kMaxInputCoordinateM) ||
+        !(std::abs(pose.position.y) <= kMaxInputCoordinateM) || !std::isfinite(yaw)) {
       warnings_.Add("odometry messages with unusable poses",
                     source_ + ": Odometry at t=" + FormatNumber(time) + " s at (" +
                         FormatNumber(pose.position.x) + ", " + FormatNumber(pose.position.y) +

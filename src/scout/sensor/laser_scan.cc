@@ -6,6 +6,20 @@
 #include <string>
 
 namespace scout::sensor {
+
+void Validate(const RangeFilterOptions& options) {
+  const auto check = [](bool ok, const char* key, double value, const char* expected) {
+    if (!ok) {
+      throw std::invalid_argument(std::string("range_filter.") + key + " must be " + expected +
+                                  ", got " + std::to_string(value));
+    }
+  };
+  check(options.min_range_m >= 0.0, "min_range_m", options.min_range_m, ">= 0");
+  check(options.max_range_m > options.min_range_m, "max_range_m", options.max_range_m,
+        "> range_filter.min_range_m");
+  check(options.miss_ray_length_m >= 0.0 && std::isfinite(options.miss_ray_length_m),
+        "miss_ray_length_m", options.miss_ray_length_m, "finite and >= 0");
+}
 namespace {
 
 void CheckNonNegative(const char* name, double value) {

@@ -40,6 +40,10 @@ struct RangeFilterOptions {
   double miss_ray_length_m = 5.0;
 };
 
+// Throws std::invalid_argument naming the first bad option
+// ("range_filter.<key> must be ..., got <value>").
+void Validate(const RangeFilterOptions& options);
+
 // Returns the points of 'scan' in the sensor frame, filtered by 'options'.
 // Throws std::invalid_argument if an option is negative or NaN.
 RangeData ToRangeData(const LaserScan& scan, const RangeFilterOptions& options);

@@ -23,12 +23,11 @@ const LocalSlamOptions& Validated(const LocalSlamOptions& options) {
 }  // namespace
 
 void Validate(const LocalSlamOptions& options) {
-  const sensor::RangeFilterOptions& range = options.range_filter;
-  CheckOption(range.min_range_m >= 0.0, "range_filter.min_range_m", range.min_range_m, ">= 0");
-  CheckOption(range.max_range_m > range.min_range_m, "range_filter.max_range_m", range.max_range_m,
-              "> range_filter.min_range_m");
-  CheckOption(range.miss_ray_length_m >= 0.0 && std::isfinite(range.miss_ray_length_m),
-              "range_filter.miss_ray_length_m", range.miss_ray_length_m, "finite and >= 0");
+  try {
+    sensor::Validate(options.range_filter);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(std::string("slam.local.") + e.what());
+  }
   CheckOption(options.voxel_filter_size_m > 0.0 && std::isfinite(options.voxel_filter_size_m),
               "voxel_filter_size_m", options.voxel_filter_size_m, "finite and > 0");
   Validate(options.adaptive_voxel_filter);

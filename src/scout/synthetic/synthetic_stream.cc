@@ -3,6 +3,7 @@
 #include <deque>
 #include <memory>
 #include <random>
+#include <stdexcept>
 #include <string>
 
 #include "scout/common/error.h"
@@ -53,12 +54,11 @@ void Validate(const SyntheticStreamOptions& o) {
   Require(o.optimize_every_n_scans >= 1, "optimize_every_n_scans", o.optimize_every_n_scans,
           ">= 1");
   Require(o.max_scans >= 0, "max_scans", o.max_scans, ">= 0");
-  Require(o.range_filter.min_range_m >= 0.0, "range_filter.min_range_m", o.range_filter.min_range_m,
-          ">= 0");
-  Require(o.range_filter.max_range_m > o.range_filter.min_range_m, "range_filter.max_range_m",
-          o.range_filter.max_range_m, "> range_filter.min_range_m");
-  Require(o.range_filter.miss_ray_length_m >= 0.0, "range_filter.miss_ray_length_m",
-          o.range_filter.miss_ray_length_m, ">= 0");
+  try {
+    sensor::Validate(o.range_filter);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(std::string("synthetic.") + e.what());
+  }
   // The parts' own checks name their keys relative to their part.
   try {
     Validate(o.tour);
