@@ -68,19 +68,30 @@ int RunFrontierBench(const FrontierBenchArgs& args) {
                           {args.world, args.config_file});
 
   const bool terminal = !args.quiet && ::isatty(STDERR_FILENO);
+  // By wall time, not by event count: one optimisation round of full
+  // recomputation can take seconds in a large world or with tiny submaps.
+  // A terminal's line is rewritten in place; a log gets a plain line now and
+  // then, so a long run there shows it is alive too.
+  const double progress_interval_s = terminal ? 0.5 : 30.0;
+  double last_progress_s = 0.0;
+  bool progress_printed = false;
   synthetic::SyntheticEventStream stream(world, config.synthetic, args.seed);
-  int events_seen = 0;
   const synthetic::StreamStats stats = stream.Run([&](const events::SubmapEvent& event) {
     ThrowIfInterrupted();
     engine.Apply(event);
-    ++events_seen;
-    if (terminal && events_seen % 200 == 0) {
-      std::cerr << "\rfrontier-bench: " << engine.catalog().size() << " submaps, "
-                << engine.optimizations() << " optimisations, " << engine.catalog().total_points()
-                << " local frontier points" << std::flush;
+    ThrowIfInterrupted();  // a round can take seconds; do not print after Ctrl-C
+    const double now_s = wall.ElapsedUs() * 1e-6;
+    if (!args.quiet && now_s - last_progress_s >= progress_interval_s) {
+      last_progress_s = now_s;
+      progress_printed = true;
+      std::cerr << (terminal ? "\r" : "") << "frontier-bench: " << std::fixed
+                << std::setprecision(0) << now_s << " s, " << engine.catalog().size()
+                << " submaps, " << engine.optimizations() << " optimisations, "
+                << engine.catalog().total_points() << " local frontier points"
+                << (terminal ? "" : "\n") << std::flush;
     }
   });
-  if (terminal) std::cerr << "\n";
+  if (terminal && progress_printed) std::cerr << "\n";
   engine.Flush();
 
   nlohmann::json summary;
