@@ -29,8 +29,10 @@ int RunCompare(const CompareArgs& args) {
     WriteTextFileAtomically(out.Stage(file.name), file.content);
   }
   out.Commit();
-  std::cout << "compare: " << dirs.size() << " runs, " << (out.path() / "compare.html").string()
-            << " and " << files.size() - 1 << " figures\n";
+  const size_t figures = files.size() - 1;
+  std::cout << "compare: " << dirs.size() << (dirs.size() == 1 ? " run, " : " runs, ")
+            << (out.path() / "compare.html").string() << " and " << figures
+            << (figures == 1 ? " figure\n" : " figures\n");
   return 0;
 }
 

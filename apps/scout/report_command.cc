@@ -35,8 +35,10 @@ int RunReport(const ReportArgs& args) {
     WriteTextFileAtomically(out.Stage(file.name), file.content);
   }
   out.Commit();
-  std::cout << "report: " << (out.path() / "report.html").string() << " and " << files.size() - 1
-            << " figures in " << (out.path() / "figures").string() << "\n";
+  const size_t figures = files.size() - 1;
+  std::cout << "report: " << (out.path() / "report.html").string() << " and " << figures
+            << (figures == 1 ? " figure in " : " figures in ") << (out.path() / "figures").string()
+            << "\n";
   return 0;
 }
 

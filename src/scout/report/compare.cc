@@ -195,7 +195,9 @@ std::string RenderComparison(const std::vector<RunData>& runs, const std::vector
          << f.svg << "<figcaption>" << EscapeXml(f.caption) << " (figures/" << EscapeXml(f.name)
          << ".svg)</figcaption></figure>\n";
   }
-  return HtmlPage("Scout comparison of " + std::to_string(runs.size()) + " runs", body.str());
+  return HtmlPage(
+      "Scout comparison of " + std::to_string(runs.size()) + (runs.size() == 1 ? " run" : " runs"),
+      body.str());
 }
 
 std::vector<ReportFile> BuildComparison(const std::vector<std::filesystem::path>& dirs) {
