@@ -157,6 +157,19 @@ TEST_F(ScoutCli, FrontierBenchWritesConsistentOutputs) {
   EXPECT_EQ(rows, 5 * summary["optimizations"].get<int>());
 }
 
+TEST_F(ScoutCli, AnInterruptedBenchLeavesNothingBehind) {
+  // The office bench takes about a minute; a bench cut short would score the
+  // strategies on part of the stream, so nothing is written.
+  const fs::path out = dir_ / "interrupted";
+  const Result r = scout::testing::RunScoutAndInterrupt(
+      "frontier-bench --world office --quiet --out " + out.string(), out.string());
+  EXPECT_EQ(r.exit_code, 130) << r.output;
+  EXPECT_NE(r.output.find("scout: interrupted by SIGINT; nothing written"), std::string::npos)
+      << r.output;
+  // The directory the run created goes with its staging directory.
+  EXPECT_FALSE(fs::exists(out));
+}
+
 TEST_F(ScoutCli, WithoutExactThePictureShowsTheFirstNamedStrategy) {
   // The default picture strategy is exact; a run without it used to stop
   // with "frontier strategy 'exact' is not running in this engine".

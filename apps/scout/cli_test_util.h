@@ -27,6 +27,24 @@ inline CliResult RunScout(const std::string& args) {
   return r;
 }
 
+// Starts scout with 'args' (which must include --out 'out'), sends it SIGINT
+// once 'out' exists (the commands make it after installing their handler;
+// gives up waiting after 30 s), and returns its output and exit code.
+inline CliResult RunScoutAndInterrupt(const std::string& args, const std::string& out) {
+  const std::string script = "sh -c '" + std::string(SCOUT_BINARY) + " " + args +
+                             " & pid=$!; n=0; until [ -d " + out +
+                             " ] || [ $n -ge 300 ]; do sleep 0.1; n=$((n+1)); done; " +
+                             "kill -INT $pid; wait $pid; echo exit=$?'";
+  CliResult r;
+  FILE* pipe = popen((script + " 2>&1").c_str(), "r");
+  char buffer[4096];
+  while (pipe != nullptr && fgets(buffer, sizeof(buffer), pipe) != nullptr) r.output += buffer;
+  if (pipe != nullptr) pclose(pipe);
+  const size_t at = r.output.rfind("exit=");
+  if (at != std::string::npos) r.exit_code = std::stoi(r.output.substr(at + 5));
+  return r;
+}
+
 }  // namespace scout::testing
 
 #endif  // SCOUT_APPS_SCOUT_CLI_TEST_UTIL_H_

@@ -110,26 +110,30 @@ TEST_F(ExploreCli, BadInputsNameWhatIsWrongAndLeaveNoOutputs) {
   EXPECT_FALSE(fs::exists(out));
 }
 
-TEST_F(ExploreCli, AnInterruptedRunLeavesNothingBehind) {
+TEST_F(ExploreCli, AnInterruptedRunKeepsTheRunSoFar) {
   // The office takes about a minute: interrupted once its output directory
-  // (made after the handler is installed) appears.
+  // (made after the handler is installed) appears, the run stops, finishes
+  // its SLAM and writes everything, saying why it ended.
   const fs::path out = dir_ / "interrupted";
-  const std::string script = "sh -c '" + std::string(SCOUT_BINARY) +
-                             " explore --world office --quiet --out " + out.string() +
-                             " & pid=$!; n=0; until [ -d " + out.string() +
-                             " ] || [ $n -ge 300 ]; do sleep 0.1; n=$((n+1)); done; " +
-                             "kill -INT $pid; wait $pid; echo exit=$?'";
-  std::string output;
-  FILE* pipe = popen((script + " 2>&1").c_str(), "r");
-  ASSERT_NE(pipe, nullptr);
-  char buffer[4096];
-  while (fgets(buffer, sizeof(buffer), pipe) != nullptr) output += buffer;
-  pclose(pipe);
-  EXPECT_NE(output.find("scout: interrupted by SIGINT; nothing written"), std::string::npos)
-      << output;
-  EXPECT_NE(output.find("exit=130"), std::string::npos) << output;
-  // The directory the run created goes with its staging directory.
-  EXPECT_FALSE(fs::exists(out));
+  const Result r = scout::testing::RunScoutAndInterrupt(
+      "explore --world office --quiet --out " + out.string(), out.string());
+  EXPECT_EQ(r.exit_code, 130) << r.output;
+  EXPECT_NE(r.output.find("scout: explore stopped by SIGINT at t="), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("explore: office seed 1: interrupted"), std::string::npos) << r.output;
+  std::ifstream in(out / "summary.json");
+  const nlohmann::json summary = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+  ASSERT_TRUE(summary.is_object()) << r.output;
+  EXPECT_EQ(summary["terminated"], "interrupted");
+  EXPECT_LT(summary["coverage"].get<double>(), 0.9);
+  EXPECT_TRUE(summary["goals"]["frontier_left"].is_null());  // the goals had not run out
+  for (const char* name : {"map.yaml", "map.pgm", "map.png", "trajectory.tum", "truth.tum",
+                           "coverage.csv", "report.html"}) {
+    EXPECT_TRUE(fs::is_regular_file(out / name)) << name;
+  }
+  // Nothing but the run's own files: no staging directory left beside them.
+  for (const fs::directory_entry& e : fs::directory_iterator(out)) {
+    EXPECT_EQ(e.path().filename().string().find(".scout-staging"), std::string::npos) << e.path();
+  }
 }
 
 TEST_F(ExploreCli, ExploresASmallMapAndWritesEveryOutput) {

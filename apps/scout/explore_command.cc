@@ -119,6 +119,19 @@ nlohmann::json OptionalSeconds(const std::optional<double>& t) {
   return t ? nlohmann::json(*t) : nlohmann::json(nullptr);
 }
 
+// A count of frontier left, or null when the run ended before the goal
+// manager finished and so never counted it.
+nlohmann::json Counted(const exploration::ExplorationResult& r, int count) {
+  return r.frontier_counted ? nlohmann::json(count) : nlohmann::json(nullptr);
+}
+
+std::string FrontierLeftText(const exploration::ExplorationResult& r) {
+  if (!r.frontier_counted) return "frontier left not counted (the goals had not run out)";
+  return std::to_string(r.frontier_left) + " frontier points left unreached (" +
+         std::to_string(r.reachable_frontier_left) + " reachable, never visited; " +
+         std::to_string(r.visited_frontier_left) + " reachable near reached goals)";
+}
+
 nlohmann::json Summary(const ExploreArgs& args, const exploration::ExplorationLoop& loop,
                        const exploration::ExplorationResult& r, double wall_time_s,
                        double ate_rmse_m) {
@@ -161,9 +174,10 @@ nlohmann::json Summary(const ExploreArgs& args, const exploration::ExplorationLo
                 {"back_ups_blocked", r.counters.back_ups_blocked},
                 {"guard_stops", r.counters.guard_stops},
                 {"guard_steers", r.counters.guard_steers},
-                {"frontier_left", r.frontier_left},
-                {"reachable_frontier_left", r.reachable_frontier_left},
-                {"visited_frontier_left", r.visited_frontier_left}};
+                // null: not counted, the goal manager had not finished.
+                {"frontier_left", Counted(r, r.frontier_left)},
+                {"reachable_frontier_left", Counted(r, r.reachable_frontier_left)},
+                {"visited_frontier_left", Counted(r, r.visited_frontier_left)}};
   // Where each goal the true world made unreachable was, and the robot then
   // (world frame), so they can be found on the map; and the goal, target and
   // robot as the map had them (*_map, in the frame of map.yaml and
@@ -306,7 +320,7 @@ int RunExplore(const ExploreArgs& args) {
     };
   }
   const exploration::ExplorationResult result =
-      loop.Run(progress, terminal ? 5.0 : 60.0, ThrowIfInterrupted);
+      loop.Run(progress, terminal ? 5.0 : 60.0, [] { return PendingSignal() != 0; });
   if (terminal) std::cerr << "\n";
   const double wall_time_s = wall.ElapsedUs() * 1e-6;
 
@@ -361,9 +375,7 @@ int RunExplore(const ExploreArgs& args) {
             << result.counters.goals_reached << " reached, " << result.counters.goals_failed
             << " failed, " << result.unreachable_goals << " unreachable in truth; collisions "
             << result.collisions << "; ATE RMSE " << std::setprecision(3) << ate_rmse_m << " m; "
-            << result.frontier_left << " frontier points left unreached ("
-            << result.reachable_frontier_left << " reachable, never visited; "
-            << result.visited_frontier_left << " reachable near reached goals)\n"
+            << FrontierLeftText(result) << "\n"
             << "outputs: " << (out.path() / "summary.json").string()
             << ", map.yaml, map.pgm, map.png, coverage.png, trajectory.tum, truth.tum, "
                "frontier.csv, coverage.csv, report.html, figures/"
@@ -372,6 +384,15 @@ int RunExplore(const ExploreArgs& args) {
                                 "unreachable was chosen on, and the true world around it)"
                               : "")
             << "\n";
+  if (result.terminated == exploration::Termination::kInterrupted) {
+    // The run so far is complete in itself and written; the exit code still
+    // tells a script that it did not end by itself.
+    const int signal_number = PendingSignal();
+    std::cerr << "scout: explore stopped by " << SignalName(signal_number)
+              << " at t=" << std::setprecision(1) << result.sim_time_s
+              << " s; the run so far is written\n";
+    return 128 + signal_number;
+  }
   return 0;
 }
 

@@ -15,9 +15,12 @@ void OnSignal(int signal_number) { g_signal = signal_number; }
 }  // namespace
 
 Interrupted::Interrupted(int signal_number)
-    : std::runtime_error(std::string("interrupted by ") +
-                         (signal_number == SIGINT ? "SIGINT" : "SIGTERM")),
+    : std::runtime_error(std::string("interrupted by ") + SignalName(signal_number)),
       signal_number_(signal_number) {}
+
+const char* SignalName(int signal_number) { return signal_number == SIGINT ? "SIGINT" : "SIGTERM"; }
+
+int PendingSignal() { return g_signal; }
 
 void InstallInterruptHandler() {
   struct sigaction action {};

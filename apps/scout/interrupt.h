@@ -21,6 +21,11 @@ class Interrupted : public std::runtime_error {
 // either ends the process at once, as without the handler.
 void InstallInterruptHandler();
 void ThrowIfInterrupted();
+// The signal that arrived (SIGINT or SIGTERM), or 0: for a command that ends
+// its run early and keeps what it has instead of throwing.
+int PendingSignal();
+// "SIGINT" or "SIGTERM".
+const char* SignalName(int signal_number);
 
 }  // namespace scout::apps
 

@@ -67,6 +67,8 @@ std::string_view ToString(Termination termination) {
       return "max_sim_time";
     case Termination::kNoProgress:
       return "no_progress";
+    case Termination::kInterrupted:
+      return "interrupted";
   }
   return "unknown";
 }
@@ -360,7 +362,7 @@ std::optional<Termination> ExplorationLoop::CheckTermination(
 }
 
 ExplorationResult ExplorationLoop::Run(const ProgressCallback& progress, double progress_interval_s,
-                                       const std::function<void()>& poll) {
+                                       const std::function<bool()>& stop_requested) {
   const ExploreOptions& e = options_.explore;
   FeedSensors();  // the readings of t = 0
   double next_sample_s = 0.0;
@@ -369,7 +371,6 @@ ExplorationResult ExplorationLoop::Run(const ProgressCallback& progress, double 
   double last_heading_rad = EstimatedPose().theta();
   bool started = false;
   while (true) {
-    if (poll) poll();
     const double t = robot_.sim_time_s();
     bool changed = MaybeUpdateMap(/*force=*/fused_map_.limits.num_cells() == 0);
     explore::ExploreStatus status;
@@ -426,9 +427,12 @@ ExplorationResult ExplorationLoop::Run(const ProgressCallback& progress, double 
       progress({t, result_.coverage, goals_.state(), goals_.counters()});
       next_progress_s += progress_interval_s;
     }
-    if (std::optional<Termination> end = CheckTermination(status)) {
+    std::optional<Termination> end = CheckTermination(status);
+    if (!end && stop_requested && stop_requested()) end = Termination::kInterrupted;
+    if (end) {
       result_.terminated = *end;
       result_.returned_home = status.returned_home;
+      result_.frontier_counted = status.state == explore::ExploreState::kFinished;
       result_.frontier_left = status.frontier_left;
       result_.reachable_frontier_left = status.reachable_frontier_left;
       result_.reachable_frontier_left_world =

@@ -28,10 +28,11 @@ namespace scout::exploration {
 
 // Why a run ended.
 enum class Termination {
-  kComplete,    // the goal manager found no frontier left (and came home, if asked)
-  kMaxSimTime,  // explore.max_sim_time_s passed
-  kNoProgress,  // the robot's map stopped growing for explore.no_progress_timeout_s, or
-                // frontier points remained that no goal could reach
+  kComplete,     // the goal manager found no frontier left (and came home, if asked)
+  kMaxSimTime,   // explore.max_sim_time_s passed
+  kNoProgress,   // the robot's map stopped growing for explore.no_progress_timeout_s, or
+                 // frontier points remained that no goal could reach
+  kInterrupted,  // the caller asked the run to stop (a user's Ctrl-C)
 };
 std::string_view ToString(Termination termination);
 
@@ -112,7 +113,11 @@ struct ExplorationResult {
   int unreachable_points = 0;
   int collisions = 0;
   bool returned_home = false;
-  // Frontier points left when the goal manager finished (0 when complete).
+  // Whether the goal manager finished (ran out of navigation points), so
+  // that the frontier left was counted; not for runs that ran out of time,
+  // stopped gaining map, or were interrupted while it still had goals.
+  bool frontier_counted = false;
+  // Frontier points left when the goal manager finished.
   int frontier_left = 0;
   // Of frontier_left, reachable by a plan and never visited, and reachable
   // but near a goal the robot reached (ExploreStatus).
@@ -161,10 +166,11 @@ class ExplorationLoop {
 
   // Runs until a termination condition, then finishes SLAM (final
   // optimisation) and measures the final map. Calls 'progress' about every
-  // 'progress_interval_s' of sim time, and 'poll' every control step (it may
-  // throw to abandon the run: a user's interrupt). Call once.
+  // 'progress_interval_s' of sim time, and 'stop_requested' every control
+  // step: when it returns true the run ends "interrupted" and is measured like
+  // any other (a user's Ctrl-C keeps the map so far). Call once.
   ExplorationResult Run(const ProgressCallback& progress = {}, double progress_interval_s = 10.0,
-                        const std::function<void()>& poll = {});
+                        const std::function<bool()>& stop_requested = {});
 
   // Call before Run().
   void set_scan_recorder(ScanRecorder recorder) { scan_recorder_ = std::move(recorder); }

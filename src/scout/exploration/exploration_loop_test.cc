@@ -42,6 +42,7 @@ TEST(ExplorationLoopTest, ExploresASmallBuildingCompletelyAndQuickly) {
   // way (the last may end with the run), none replaced on map changes.
   EXPECT_GE(r.counters.goals_reached + r.counters.goals_seen, r.counters.goals_issued - 1);
   EXPECT_EQ(r.counters.goals_superseded, 0);
+  EXPECT_TRUE(r.frontier_counted);
   EXPECT_EQ(r.frontier_left, 0);
   EXPECT_LT(wall_s, 30.0);  // a few seconds in release; sanitizer builds are slower
   EXPECT_GT(progress_calls, 2);
@@ -112,6 +113,7 @@ TEST(ExplorationLoopTest, ARunThatCannotFinishEndsByItself) {
   const ExplorationResult r = Explore(o, 1);
   EXPECT_EQ(r.terminated, Termination::kMaxSimTime);
   EXPECT_NEAR(r.sim_time_s, 3.0, 0.1);
+  EXPECT_FALSE(r.frontier_counted);  // the goals had not run out
 
   // Without a goal policy able to move (zero speed is refused), a stalled
   // robot is caught by the coverage watchdog instead.
@@ -124,6 +126,28 @@ TEST(ExplorationLoopTest, ARunThatCannotFinishEndsByItself) {
   const ExplorationResult s = Explore(stalled, 1);
   EXPECT_EQ(s.terminated, Termination::kNoProgress);
   EXPECT_LT(s.sim_time_s, 30.0);
+}
+
+TEST(ExplorationLoopTest, AStopRequestEndsTheRunMeasuredLikeAnyOther) {
+  // A user's Ctrl-C: asked once, from 20 s of simulated time on.
+  ExplorationLoop loop(testing::SmallBuilding(), {}, 7);
+  double last_progress_s = 0.0;
+  const ExplorationResult r =
+      loop.Run([&](const ExplorationProgress& p) { last_progress_s = p.sim_time_s; }, 1.0,
+               [&] { return last_progress_s >= 20.0; });
+  EXPECT_EQ(r.terminated, Termination::kInterrupted);
+  EXPECT_EQ(ToString(r.terminated), "interrupted");
+  EXPECT_NEAR(r.sim_time_s, 20.0, 0.5);
+  EXPECT_FALSE(r.frontier_counted);
+  // The map so far is measured (from the start the lidar sees much of this
+  // small building), and the run is shorter than the one left to finish.
+  EXPECT_GT(r.coverage, 0.1);
+  const ExplorationResult whole = Explore({}, 7);
+  EXPECT_EQ(whole.terminated, Termination::kComplete);
+  EXPECT_LT(r.path_length_m, whole.path_length_m);
+  EXPECT_EQ(r.coverage_samples.back().sim_time_s, r.sim_time_s);
+  EXPECT_FALSE(r.truth.empty());
+  EXPECT_GT(loop.map_builder().GetTrajectory().size(), 10u);
 }
 
 TEST(ExplorationLoopTest, ABoundaryKeepsTheRobotToItsAreaAndCoverageToIt) {
