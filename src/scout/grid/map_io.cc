@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "scout/common/atomic_file.h"
 #include "scout/common/error.h"
@@ -41,12 +42,18 @@ class MapYaml {
     if (!in) Fail("cannot open: permission denied or not a file");
     std::stringstream content;
     content << in.rdbuf();
+    std::vector<YAML::Node> documents;
     try {
-      root_ = YAML::Load(content.str());
+      documents = YAML::LoadAll(content.str());
     } catch (const YAML::ParserException& e) {
       throw InputError(path.string() + ":" + std::to_string(e.mark.line + 1) +
                        ": invalid YAML: " + e.msg);
     }
+    if (documents.size() > 1) {
+      Fail("holds " + std::to_string(documents.size()) +
+           " YAML documents (separated by '---'); expected one");
+    }
+    if (!documents.empty()) root_ = documents.front();
     if (!root_.IsMap()) {
       Fail("expected a YAML mapping with 'image', 'resolution' and 'origin'");
     }

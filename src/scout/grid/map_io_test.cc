@@ -179,6 +179,7 @@ TEST(MapIo, BadInputsNameTheFileAndField) {
   expect("image: ok.pgm\nfree_thresh: 0.7\n" + good_rest, {"'free_thresh'"});
   expect("image: ok.pgm\nresolution: [0.05\n", {"invalid YAML"});
   expect("- just\n- a list\n", {"mapping"});
+  expect("image: ok.pgm\n" + good_rest + "---\nresolution: 0.1\n", {"holds 2 YAML documents"});
 
   dir.Write("short.pgm", "P5\n4 4\n255\nabc");
   expect("image: short.pgm\n" + good_rest, {"'image'", "short.pgm", "truncated"});

@@ -3,6 +3,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <numbers>
+#include <vector>
 
 #include "scout/common/error.h"
 #include "scout/common/input_file.h"
@@ -90,7 +91,14 @@ ScoutConfig LoadConfig(const std::filesystem::path& path) {
   RequireRegularFile(path, "an options file (YAML)");
   YAML::Node root;
   try {
-    root = YAML::LoadFile(path.string());
+    // All documents, so that a second one (after '---') is an error rather
+    // than options silently ignored.
+    const std::vector<YAML::Node> documents = YAML::LoadAllFromFile(path.string());
+    if (documents.size() > 1) {
+      throw InputError(path.string() + ": holds " + std::to_string(documents.size()) +
+                       " YAML documents (separated by '---'); expected one");
+    }
+    if (!documents.empty()) root = documents.front();
   } catch (const YAML::BadFile&) {
     throw InputError(path.string() + ": cannot open options file");
   } catch (const YAML::Exception& e) {

@@ -129,7 +129,10 @@ TEST_F(ConfigTest, ARepeatedOrNonScalarKeyIsAnError) {
       {{"frontier:\n  epsilon_m: 0.1\n  epsilon_m: 0.2\n", "options.yaml:3"},
        {"frontier:\n  epsilon_m: 0.1\n  epsilon_m: 0.2\n", "'frontier.epsilon_m' given twice"},
        {"frontier:\n  epsilon_m: 0.1\nfrontier:\n  epsilon_m: 0.3\n", "'frontier' given twice"},
-       {"frontier:\n  ? [a, b]\n  : 1\n", "expected option names as keys"}});
+       {"frontier:\n  ? [a, b]\n  : 1\n", "expected option names as keys"},
+       // yaml-cpp's LoadFile reads the first document only.
+       {"frontier:\n  epsilon_m: 0.1\n---\nfrontier:\n  epsilon_m: 0.3\n",
+        "options.yaml: holds 2 YAML documents"}});
 }
 
 TEST_F(ConfigTest, SyntheticOptionsAreCheckedWhenTheFileLoads) {
