@@ -2,10 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
 namespace scout::sensor {
+
+static_assert(kMaxRayLength_m == 200.0, "the messages below say 200");
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 void Validate(const RangeFilterOptions& options) {
   const auto check = [](bool ok, const char* key, double value, const char* expected) {
@@ -17,8 +21,10 @@ void Validate(const RangeFilterOptions& options) {
   check(options.min_range_m >= 0.0, "min_range_m", options.min_range_m, ">= 0");
   check(options.max_range_m > options.min_range_m, "max_range_m", options.max_range_m,
         "> range_filter.min_range_m");
-  check(options.miss_ray_length_m >= 0.0 && std::isfinite(options.miss_ray_length_m),
-        "miss_ray_length_m", options.miss_ray_length_m, "finite and >= 0");
+  check(options.max_range_m <= kMaxRayLength_m || options.max_range_m == kInfinity, "max_range_m",
+        options.max_range_m, "at most 200 (m) when given");
+  check(options.miss_ray_length_m >= 0.0 && options.miss_ray_length_m <= kMaxRayLength_m,
+        "miss_ray_length_m", options.miss_ray_length_m, "in [0, 200] (m)");
 }
 namespace {
 
@@ -36,7 +42,10 @@ RangeData ToRangeData(const LaserScan& scan, const RangeFilterOptions& options) 
   CheckNonNegative("max_range_m", options.max_range_m);
   CheckNonNegative("miss_ray_length_m", options.miss_ray_length_m);
   const double min_range_m = std::max<double>(options.min_range_m, scan.range_min_m);
-  const double max_range_m = std::min<double>(options.max_range_m, scan.range_max_m);
+  // A corrupt log's range (or range_max) cannot make a ray longer than this.
+  const double max_range_m =
+      std::min({options.max_range_m, static_cast<double>(scan.range_max_m), kMaxRayLength_m});
+  const double miss_ray_length_m = std::min(options.miss_ray_length_m, kMaxRayLength_m);
 
   RangeData data;
   data.returns.reserve(scan.ranges.size());
@@ -47,8 +56,8 @@ RangeData ToRangeData(const LaserScan& scan, const RangeFilterOptions& options) 
     const double range_m = scan.ranges[k];
     const bool no_return = std::isnan(range_m) || range_m >= max_range_m;
     if (no_return) {
-      if (options.miss_ray_length_m > 0.0) {
-        data.misses.push_back(options.miss_ray_length_m * direction);
+      if (miss_ray_length_m > 0.0) {
+        data.misses.push_back(miss_ray_length_m * direction);
       }
     } else if (range_m >= min_range_m) {
       data.returns.push_back(range_m * direction);

@@ -28,15 +28,21 @@ struct RangeData {
   std::vector<Eigen::Vector2d> misses;
 };
 
+// The longest ray Scout inserts, returns and misses alike: far beyond any 2D
+// lidar, and short enough that a corrupt range cannot grow a submap to
+// billions of cells (200 m is 4,000 cells at 5 cm).
+inline constexpr double kMaxRayLength_m = 200.0;
+
 struct RangeFilterOptions {
   // Returns closer than this are dropped (the scan's own range_min_m applies too).
   double min_range_m = 0.0;
   // Returns at or beyond this count as "no return"; the scan's range_max_m
-  // applies too, so the default (+infinity) means "use the scan's range_max_m".
+  // and kMaxRayLength_m apply too, so the default (+infinity) means "use the
+  // scan's range_max_m". At most kMaxRayLength_m when finite.
   double max_range_m = std::numeric_limits<double>::infinity();
   // Beams without a return (NaN, +infinity, >= max range) become free-space-only
   // misses of this length, as Cartographer's missing_data_ray_length (5 m).
-  // 0 drops them.
+  // 0 drops them. At most kMaxRayLength_m.
   double miss_ray_length_m = 5.0;
 };
 

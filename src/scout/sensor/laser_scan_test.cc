@@ -74,6 +74,29 @@ TEST(ToRangeData, FilterMaximumBelowScanMaximumTurnsFarReturnsIntoMisses) {
   EXPECT_NEAR(data.misses[0].norm(), 2.0, 1e-9);
 }
 
+TEST(ToRangeData, NoRayIsLongerThanTheLimitWhateverTheScanSays) {
+  // A corrupt log: a range maximum of 1e20 m and a reading of 1e7 m.
+  LaserScan scan = MakeScan({1.f, 1e7f, 150.f, kInf});
+  scan.range_max_m = 1e20f;
+  const RangeData data = ToRangeData(scan, {});  // no filter maximum
+  ASSERT_EQ(data.returns.size(), 2u);
+  EXPECT_NEAR(data.returns[1].norm(), 150.0, 1e-3);
+  ASSERT_EQ(data.misses.size(), 2u);  // 1e7 m and +inf: no return
+  EXPECT_NEAR(data.misses[0].norm(), 5.0, 1e-9);
+}
+
+TEST(ValidateRangeFilter, BoundsRayLengths) {
+  RangeFilterOptions options;
+  EXPECT_NO_THROW(Validate(options));  // +inf maximum: the scan's own
+  options.max_range_m = kMaxRayLength_m;
+  EXPECT_NO_THROW(Validate(options));
+  options.max_range_m = 1e6;
+  EXPECT_THROW(Validate(options), std::invalid_argument);
+  options.max_range_m = 15.0;
+  options.miss_ray_length_m = 1e9;
+  EXPECT_THROW(Validate(options), std::invalid_argument);
+}
+
 TEST(ToRangeData, RejectsNegativeOptions) {
   RangeFilterOptions options;
   options.min_range_m = -1.0;

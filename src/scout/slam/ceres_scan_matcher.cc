@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "scout/common/format.h"
 #include "scout/grid/probability_values.h"
 #include "scout/slam/occupied_space_cost.h"
 
@@ -37,7 +38,7 @@ struct RotationDeltaCost {
 void CheckOption(bool ok, const char* name, double value, const char* expected) {
   if (!ok) {
     throw std::invalid_argument(std::string("ceres_scan_matcher.") + name + " must be " + expected +
-                                ", got " + std::to_string(value));
+                                ", got " + ShortNumber(value));
   }
 }
 

@@ -5,13 +5,15 @@
 #include <stdexcept>
 #include <string>
 
+#include "scout/common/format.h"
+
 namespace scout::slam {
 namespace {
 
 void CheckOption(bool ok, const std::string& name, double value, const char* expected) {
   if (!ok) {
     throw std::invalid_argument("slam.local." + name + " must be " + expected + ", got " +
-                                std::to_string(value));
+                                ShortNumber(value));
   }
 }
 
@@ -23,18 +25,20 @@ const LocalSlamOptions& Validated(const LocalSlamOptions& options) {
 }  // namespace
 
 void Validate(const LocalSlamOptions& options) {
+  CheckOption(options.voxel_filter_size_m > 0.0 && std::isfinite(options.voxel_filter_size_m),
+              "voxel_filter_size_m", options.voxel_filter_size_m, "finite and > 0");
+  // The parts name their keys from their own section ("submaps.resolution_m");
+  // the user's options file has them under slam.local.
   try {
     sensor::Validate(options.range_filter);
+    Validate(options.adaptive_voxel_filter);
+    Validate(options.real_time_correlative_scan_matcher);
+    Validate(options.ceres_scan_matcher);
+    sensor::Validate(options.motion_filter);
+    Validate(options.submaps);
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(std::string("slam.local.") + e.what());
   }
-  CheckOption(options.voxel_filter_size_m > 0.0 && std::isfinite(options.voxel_filter_size_m),
-              "voxel_filter_size_m", options.voxel_filter_size_m, "finite and > 0");
-  Validate(options.adaptive_voxel_filter);
-  Validate(options.real_time_correlative_scan_matcher);
-  Validate(options.ceres_scan_matcher);
-  sensor::Validate(options.motion_filter);
-  Validate(options.submaps);
 }
 
 LocalTrajectoryBuilder::LocalTrajectoryBuilder(const LocalSlamOptions& options)

@@ -4,12 +4,16 @@
 #include <stdexcept>
 #include <string>
 
+#include "scout/common/format.h"
+
 namespace scout::slam {
 
 void Validate(const SubmapOptions& options) {
-  if (!(options.resolution_m > 0.0) || std::isinf(options.resolution_m)) {
-    throw std::invalid_argument("submaps.resolution_m must be finite and > 0, got " +
-                                std::to_string(options.resolution_m));
+  // Finer cells than 1 cm are below any 2D lidar's noise and make submaps of
+  // millions of cells; cells of more than 1 m cannot be matched against.
+  if (!(options.resolution_m >= 0.01 && options.resolution_m <= 1.0)) {
+    throw std::invalid_argument("submaps.resolution_m must be in [0.01, 1] (m), got " +
+                                ShortNumber(options.resolution_m));
   }
   if (options.num_range_data < 1) {
     throw std::invalid_argument("submaps.num_range_data must be >= 1, got " +
@@ -17,7 +21,7 @@ void Validate(const SubmapOptions& options) {
   }
   if (!(options.max_travel_m >= 0.0) || std::isinf(options.max_travel_m)) {
     throw std::invalid_argument("submaps.max_travel_m must be finite and >= 0, got " +
-                                std::to_string(options.max_travel_m));
+                                ShortNumber(options.max_travel_m));
   }
   // The inserter names hit_probability / miss_probability itself.
   grid::RangeDataInserter inserter(options.insertion);

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "scout/common/error.h"
+#include "scout/common/format.h"
 #include "scout/sim/random.h"
 #include "scout/synthetic/scan_poses.h"
 
@@ -21,7 +22,7 @@ constexpr uint64_t kCorrectionStream = 2;
 
 void Require(bool ok, const std::string& key, double value, const std::string& expected) {
   if (!ok) {
-    throw InputError("synthetic." + key + " = " + std::to_string(value) + ": expected " + expected);
+    throw InputError("synthetic." + key + " = " + ShortNumber(value) + ": expected " + expected);
   }
 }
 
@@ -45,7 +46,9 @@ std::vector<Eigen::Vector2d> Transformed(const Rigid2d& transform,
 }  // namespace
 
 void Validate(const SyntheticStreamOptions& o) {
-  Require(o.resolution_m > 0.0, "resolution_m", o.resolution_m, "> 0");
+  // As slam.local.submaps.resolution_m.
+  Require(o.resolution_m >= 0.01 && o.resolution_m <= 1.0, "resolution_m", o.resolution_m,
+          "in [0.01, 1] (m)");
   Require(o.scans_per_submap >= 1, "scans_per_submap", o.scans_per_submap, ">= 1");
   Require(o.scan_spacing_m > 0.0, "scan_spacing_m", o.scan_spacing_m, "> 0");
   Require(o.scan_spacing_rad > 0.0, "scan_spacing_rad", o.scan_spacing_rad, "> 0");
