@@ -137,17 +137,16 @@ TEST_F(ConfigTest, ARepeatedOrNonScalarKeyIsAnError) {
 
 TEST_F(ConfigTest, SizesThatWouldExhaustMemoryOrTimeAreErrors) {
   // Each of these used to fail with an internal error or never finish a scan.
-  ExpectErrors(
-      {{"slam:\n  local:\n    submaps:\n      resolution_m: 1e-9\n",
-        "slam.local.submaps.resolution_m must be in [0.01, 1]"},
-       {"slam:\n  local:\n    range_filter:\n      miss_ray_length_m: 1e9\n",
-        "slam.local.range_filter.miss_ray_length_m must be in [0, 200]"},
-       {"slam:\n  local:\n    range_filter:\n      max_range_m: 1e5\n",
-        "slam.local.range_filter.max_range_m must be at most 200"},
-       {"slam:\n  local:\n    real_time_correlative_scan_matcher:\n"
-        "      linear_search_window_m: 1000\n",
-        "linear_search_window_m must be in [0, 2]"},
-       {"synthetic:\n  resolution_m: 1e-9\n", "synthetic.resolution_m"}});
+  ExpectErrors({{"slam:\n  local:\n    submaps:\n      resolution_m: 1e-9\n",
+                 "slam.local.submaps.resolution_m must be in [0.01, 1]"},
+                {"slam:\n  local:\n    range_filter:\n      miss_ray_length_m: 1e9\n",
+                 "slam.local.range_filter.miss_ray_length_m must be in [0, 200]"},
+                {"slam:\n  local:\n    range_filter:\n      max_range_m: 1e5\n",
+                 "slam.local.range_filter.max_range_m must be at most 200"},
+                {"slam:\n  local:\n    real_time_correlative_scan_matcher:\n"
+                 "      linear_search_window_m: 1000\n",
+                 "linear_search_window_m must be in [0, 2]"},
+                {"synthetic:\n  resolution_m: 1e-9\n", "synthetic.resolution_m"}});
 }
 
 TEST_F(ConfigTest, SyntheticOptionsAreCheckedWhenTheFileLoads) {
