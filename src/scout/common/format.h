@@ -1,17 +1,18 @@
 #ifndef SCOUT_COMMON_FORMAT_H_
 #define SCOUT_COMMON_FORMAT_H_
 
-#include <sstream>
+#include <cstdio>
 #include <string>
 
 namespace scout {
 
-// A value for an error message as a user would write it: 0.05, 1e-09, 1000
-// (std::to_string prints 1e-9 as 0.000000).
-inline std::string ShortNumber(double value) {
-  std::ostringstream out;
-  out << value;
-  return out.str();
+// 'value' for a message, with up to 15 significant digits and no trailing
+// zeros: 0.05, 1e-09, 1134860000 (std::to_string prints 1e-9 as "0.000000"
+// and 1.13486e+09 as "1134860000.000000").
+inline std::string FormatNumber(double value) {
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.15g", value);
+  return text;
 }
 
 }  // namespace scout

@@ -4,20 +4,13 @@
 // Internal to the dataset readers (C++17-compatible: the bag reader uses it).
 
 #include <cstddef>
-#include <cstdio>
 #include <map>
 #include <string>
 #include <vector>
 
-namespace scout::io {
+#include "scout/common/format.h"
 
-// Returns 'value' with up to 15 significant digits and no trailing zeros
-// (std::to_string would print 1.13486e+09 as "1134860000.000000").
-inline std::string FormatNumber(double value) {
-  char text[32];
-  std::snprintf(text, sizeof(text), "%.15g", value);
-  return text;
-}
+namespace scout::io {
 
 // Collects reader warnings into a Dataset's list, keeping the first few of
 // each kind verbatim and summarising the rest: a log whose every tenth line

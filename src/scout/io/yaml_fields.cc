@@ -63,7 +63,7 @@ void YamlSection::ReadPositive(const std::string& key, double* value) {
   ReadDouble(key, &v);
   if (!(v > 0.0)) {
     throw InputError(file_ + ": '" + Name(key) + "': expected a positive number, got " +
-                     ShortNumber(v));
+                     FormatNumber(v));
   }
   *value = v;
 }
@@ -73,7 +73,7 @@ void YamlSection::ReadNonNegative(const std::string& key, double* value) {
   ReadDouble(key, &v);
   if (v < 0.0) {
     throw InputError(file_ + ": '" + Name(key) + "': expected a number >= 0, got " +
-                     ShortNumber(v));
+                     FormatNumber(v));
   }
   *value = v;
 }
@@ -89,7 +89,7 @@ void YamlSection::ReadInRange(const std::string& key, double* value, double min,
     expected << (min_bound == Bound::kInclusive ? "[" : "(") << min << ", " << max
              << (max_bound == Bound::kInclusive ? "]" : ")");
     throw InputError(file_ + ": '" + Name(key) + "': expected a number in " + expected.str() +
-                     ", got " + ShortNumber(v));
+                     ", got " + FormatNumber(v));
   }
   *value = v;
 }
@@ -110,7 +110,7 @@ void YamlSection::ReadInt(const std::string& key, int* value, int min_value, int
             ? ">= " + std::to_string(min_value)
             : "from " + std::to_string(min_value) + " to " + std::to_string(max_value);
     throw InputError(file_ + ": '" + Name(key) + "': expected an integer " + expected + ", got " +
-                     ShortNumber(v));
+                     FormatNumber(v));
   }
   *value = v;
 }

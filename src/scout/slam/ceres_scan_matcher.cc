@@ -38,7 +38,7 @@ struct RotationDeltaCost {
 void CheckOption(bool ok, const char* name, double value, const char* expected) {
   if (!ok) {
     throw std::invalid_argument(std::string("ceres_scan_matcher.") + name + " must be " + expected +
-                                ", got " + ShortNumber(value));
+                                ", got " + FormatNumber(value));
   }
 }
 

@@ -13,7 +13,7 @@ namespace {
 void CheckOption(bool ok, const std::string& name, double value, const char* expected) {
   if (!ok) {
     throw std::invalid_argument("slam.local." + name + " must be " + expected + ", got " +
-                                ShortNumber(value));
+                                FormatNumber(value));
   }
 }
 

@@ -18,7 +18,7 @@ namespace {
 void CheckOption(bool ok, const char* name, double value, const char* expected) {
   if (!ok) {
     throw std::invalid_argument(std::string("real_time_correlative_scan_matcher.") + name +
-                                " must be " + expected + ", got " + ShortNumber(value));
+                                " must be " + expected + ", got " + FormatNumber(value));
   }
 }
 

@@ -13,7 +13,7 @@ void Validate(const SubmapOptions& options) {
   // millions of cells; cells of more than 1 m cannot be matched against.
   if (!(options.resolution_m >= 0.01 && options.resolution_m <= 1.0)) {
     throw std::invalid_argument("submaps.resolution_m must be in [0.01, 1] (m), got " +
-                                ShortNumber(options.resolution_m));
+                                FormatNumber(options.resolution_m));
   }
   if (options.num_range_data < 1) {
     throw std::invalid_argument("submaps.num_range_data must be >= 1, got " +
@@ -21,7 +21,7 @@ void Validate(const SubmapOptions& options) {
   }
   if (!(options.max_travel_m >= 0.0) || std::isinf(options.max_travel_m)) {
     throw std::invalid_argument("submaps.max_travel_m must be finite and >= 0, got " +
-                                ShortNumber(options.max_travel_m));
+                                FormatNumber(options.max_travel_m));
   }
   // The inserter names hit_probability / miss_probability itself.
   grid::RangeDataInserter inserter(options.insertion);

@@ -22,7 +22,7 @@ constexpr uint64_t kCorrectionStream = 2;
 
 void Require(bool ok, const std::string& key, double value, const std::string& expected) {
   if (!ok) {
-    throw InputError("synthetic." + key + " = " + ShortNumber(value) + ": expected " + expected);
+    throw InputError("synthetic." + key + " = " + FormatNumber(value) + ": expected " + expected);
   }
 }
 
