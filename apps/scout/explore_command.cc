@@ -388,9 +388,8 @@ int RunExplore(const ExploreArgs& args) {
     // The run so far is complete in itself and written; the exit code still
     // tells a script that it did not end by itself.
     const int signal_number = PendingSignal();
-    std::cerr << "scout: explore stopped by " << SignalName(signal_number)
-              << " at t=" << std::setprecision(1) << result.sim_time_s
-              << " s; the run so far is written\n";
+    std::cerr << "scout: explore stopped by " << SignalName(signal_number) << " at t=" << std::fixed
+              << std::setprecision(1) << result.sim_time_s << " s; the run so far is written\n";
     return 128 + signal_number;
   }
   return 0;

@@ -216,6 +216,8 @@ TEST(DiffDriveRobot, InvalidOptionsNameTheKey) {
   options = DiffDriveOptions{};
   options.collision_substep_cells = 2.0;
   EXPECT_THROW(CheckDiffDriveOptions(options), InputError);
+  options.collision_substep_cells = 1e-9;  // would never finish a step
+  EXPECT_THROW(CheckDiffDriveOptions(options), InputError);
   options = DiffDriveOptions{};
   options.radius_m = std::nan("");
   EXPECT_THROW(CheckDiffDriveOptions(options), InputError);

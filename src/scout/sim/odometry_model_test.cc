@@ -147,6 +147,18 @@ TEST(OdometryModel, InvalidOptionsNameTheKey) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("odometry.rot_per_trans"), std::string::npos);
   }
+  // Beyond any wheel odometry; 1e6 made the SLAM map outgrow its size limit.
+  options = OdometryNoiseOptions{};
+  options.trans_per_trans = 1e6;
+  try {
+    OdometryModel model(options, 1, geometry::Rigid2d(), geometry::Rigid2d());
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("odometry.trans_per_trans = 1e+06: expected a value in "
+                                         "[0, 10]"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 }  // namespace
