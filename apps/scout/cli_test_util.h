@@ -28,13 +28,16 @@ inline CliResult RunScout(const std::string& args) {
 }
 
 // Starts scout with 'args' (which must include --out 'out'), sends it SIGINT
-// once 'out' exists (the commands make it after installing their handler;
-// gives up waiting after 30 s), and returns its output and exit code.
-inline CliResult RunScoutAndInterrupt(const std::string& args, const std::string& out) {
-  const std::string script = "sh -c '" + std::string(SCOUT_BINARY) + " " + args +
-                             " & pid=$!; n=0; until [ -d " + out +
-                             " ] || [ $n -ge 300 ]; do sleep 0.1; n=$((n+1)); done; " +
-                             "kill -INT $pid; wait $pid; echo exit=$?'";
+// 'signals' times back to back once 'out' exists (the commands make it after
+// installing their handler; gives up waiting after 30 s), and returns its
+// output and exit code.
+inline CliResult RunScoutAndInterrupt(const std::string& args, const std::string& out,
+                                      int signals = 1) {
+  std::string kills;
+  for (int i = 0; i < signals; ++i) kills += "kill -INT $pid; ";
+  const std::string script =
+      "sh -c '" + std::string(SCOUT_BINARY) + " " + args + " & pid=$!; n=0; until [ -d " + out +
+      " ] || [ $n -ge 300 ]; do sleep 0.1; n=$((n+1)); done; " + kills + "wait $pid; echo exit=$?'";
   CliResult r;
   FILE* pipe = popen((script + " 2>&1").c_str(), "r");
   char buffer[4096];

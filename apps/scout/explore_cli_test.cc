@@ -115,8 +115,10 @@ TEST_F(ExploreCli, AnInterruptedRunKeepsTheRunSoFar) {
   // (made after the handler is installed) appears, the run stops, finishes
   // its SLAM and writes everything, saying why it ended.
   const fs::path out = dir_ / "interrupted";
+  // Twice at once, as timeout(1) delivers it (to the process and its group):
+  // one request, not the second Ctrl-C that quits at once.
   const Result r = scout::testing::RunScoutAndInterrupt(
-      "explore --world office --quiet --out " + out.string(), out.string());
+      "explore --world office --quiet --out " + out.string(), out.string(), /*signals=*/2);
   EXPECT_EQ(r.exit_code, 130) << r.output;
   EXPECT_NE(r.output.find("scout: explore stopped by SIGINT at t="), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("explore: office seed 1: interrupted"), std::string::npos) << r.output;

@@ -1,6 +1,7 @@
 #include "apps/scout/interrupt.h"
 
 #include <signal.h>
+#include <time.h>
 
 #include <csignal>
 #include <string>
@@ -9,8 +10,28 @@ namespace scout::apps {
 namespace {
 
 volatile std::sig_atomic_t g_signal = 0;
+timespec g_first_signal_time{};
 
-void OnSignal(int signal_number) { g_signal = signal_number; }
+double SecondsSince(const timespec& then) {
+  timespec now{};
+  clock_gettime(CLOCK_MONOTONIC, &now);  // async-signal-safe
+  return static_cast<double>(now.tv_sec - then.tv_sec) + 1e-9 * (now.tv_nsec - then.tv_nsec);
+}
+
+// The first signal only sets the flag. A second one ends the process at once,
+// as without the handler, unless it comes within a second of the first:
+// timeout(1) and kill(1) with a process group deliver one request twice
+// (to the process and to its group), which must not cut the run's ending.
+void OnSignal(int signal_number) {
+  if (g_signal == 0) {
+    clock_gettime(CLOCK_MONOTONIC, &g_first_signal_time);
+    g_signal = signal_number;
+    return;
+  }
+  if (SecondsSince(g_first_signal_time) < 1.0) return;
+  std::signal(signal_number, SIG_DFL);
+  std::raise(signal_number);
+}
 
 }  // namespace
 
@@ -26,8 +47,7 @@ void InstallInterruptHandler() {
   struct sigaction action {};
   action.sa_handler = OnSignal;
   sigemptyset(&action.sa_mask);
-  // The default action comes back after the first signal.
-  action.sa_flags = SA_RESETHAND;
+  action.sa_flags = 0;
   sigaction(SIGINT, &action, nullptr);
   sigaction(SIGTERM, &action, nullptr);
 }

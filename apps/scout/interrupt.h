@@ -18,7 +18,8 @@ class Interrupted : public std::runtime_error {
 };
 
 // SIGINT and SIGTERM set a flag that the long loops poll; a second one of
-// either ends the process at once, as without the handler.
+// either, a second or more after the first, ends the process at once, as
+// without the handler (sooner, it is the same request delivered twice).
 void InstallInterruptHandler();
 void ThrowIfInterrupted();
 // The signal that arrived (SIGINT or SIGTERM), or 0: for a command that ends
