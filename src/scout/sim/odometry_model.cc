@@ -24,15 +24,15 @@ void Require(bool ok, const std::string& key, double value) {
   }
 }
 
-bool NonNegative(double x) { return x >= 0.0 && x <= kMaxNoiseCoefficient; }
+bool InRange(double x) { return x >= 0.0 && x <= kMaxNoiseCoefficient; }
 
 }  // namespace
 
 void CheckOdometryNoiseOptions(const OdometryNoiseOptions& o) {
-  Require(NonNegative(o.trans_per_trans), "trans_per_trans", o.trans_per_trans);
-  Require(NonNegative(o.trans_per_rot), "trans_per_rot", o.trans_per_rot);
-  Require(NonNegative(o.rot_per_rot), "rot_per_rot", o.rot_per_rot);
-  Require(NonNegative(o.rot_per_trans), "rot_per_trans", o.rot_per_trans);
+  Require(InRange(o.trans_per_trans), "trans_per_trans", o.trans_per_trans);
+  Require(InRange(o.trans_per_rot), "trans_per_rot", o.trans_per_rot);
+  Require(InRange(o.rot_per_rot), "rot_per_rot", o.rot_per_rot);
+  Require(InRange(o.rot_per_trans), "rot_per_trans", o.rot_per_trans);
 }
 
 OdometryModel::OdometryModel(const OdometryNoiseOptions& options, uint64_t seed,
