@@ -16,15 +16,19 @@ struct CliResult {
   std::string output;  // stdout and stderr
 };
 
-inline CliResult RunScout(const std::string& args) {
-  const std::string command = std::string(SCOUT_BINARY) + " " + args + " 2>&1";
+// Runs a shell command, stderr into stdout; returns its output and exit code.
+inline CliResult RunShell(const std::string& command) {
   CliResult r;
-  FILE* pipe = popen(command.c_str(), "r");
+  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
   char buffer[4096];
   while (pipe != nullptr && fgets(buffer, sizeof(buffer), pipe) != nullptr) r.output += buffer;
   const int status = pipe != nullptr ? pclose(pipe) : -1;
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return r;
+}
+
+inline CliResult RunScout(const std::string& args) {
+  return RunShell(std::string(SCOUT_BINARY) + " " + args);
 }
 
 // Starts scout with 'args' (which must include --out 'out'), sends it SIGINT
@@ -38,11 +42,9 @@ inline CliResult RunScoutAndInterrupt(const std::string& args, const std::string
   const std::string script =
       "sh -c '" + std::string(SCOUT_BINARY) + " " + args + " & pid=$!; n=0; until [ -d " + out +
       " ] || [ $n -ge 300 ]; do sleep 0.1; n=$((n+1)); done; " + kills + "wait $pid; echo exit=$?'";
-  CliResult r;
-  FILE* pipe = popen((script + " 2>&1").c_str(), "r");
-  char buffer[4096];
-  while (pipe != nullptr && fgets(buffer, sizeof(buffer), pipe) != nullptr) r.output += buffer;
-  if (pipe != nullptr) pclose(pipe);
+  CliResult r = RunShell(script);
+  // The script's own exit code is wait's echo's; scout's is the one it prints.
+  r.exit_code = -1;
   const size_t at = r.output.rfind("exit=");
   if (at != std::string::npos) r.exit_code = std::stoi(r.output.substr(at + 5));
   return r;

@@ -73,17 +73,16 @@ int RunFrontierBench(const FrontierBenchArgs& args) {
   // A terminal's line is rewritten in place; a log gets a plain line now and
   // then, so a long run there shows it is alive too.
   const double progress_interval_s = terminal ? 0.5 : 30.0;
-  double last_progress_s = 0.0;
-  bool progress_printed = false;
+  double last_progress_s = 0.0;  // 0 until the first line
   synthetic::SyntheticEventStream stream(world, config.synthetic, args.seed);
   const synthetic::StreamStats stats = stream.Run([&](const events::SubmapEvent& event) {
-    ThrowIfInterrupted();
     engine.Apply(event);
-    ThrowIfInterrupted();  // a round can take seconds; do not print after Ctrl-C
+    // After the event: a round can take seconds, and the next event's check
+    // would come only after its own. No line is printed after Ctrl-C.
+    ThrowIfInterrupted();
     const double now_s = wall.ElapsedUs() * 1e-6;
     if (!args.quiet && now_s - last_progress_s >= progress_interval_s) {
       last_progress_s = now_s;
-      progress_printed = true;
       std::cerr << (terminal ? "\r" : "") << "frontier-bench: " << std::fixed
                 << std::setprecision(0) << now_s << " s, " << engine.catalog().size()
                 << " submaps, " << engine.optimizations() << " optimisations, "
@@ -91,7 +90,7 @@ int RunFrontierBench(const FrontierBenchArgs& args) {
                 << (terminal ? "" : "\n") << std::flush;
     }
   });
-  if (terminal && progress_printed) std::cerr << "\n";
+  if (terminal && last_progress_s > 0.0) std::cerr << "\n";
   engine.Flush();
 
   nlohmann::json summary;

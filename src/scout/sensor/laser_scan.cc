@@ -45,7 +45,6 @@ RangeData ToRangeData(const LaserScan& scan, const RangeFilterOptions& options) 
   // A corrupt log's range (or range_max) cannot make a ray longer than this.
   const double max_range_m =
       std::min({options.max_range_m, static_cast<double>(scan.range_max_m), kMaxRayLength_m});
-  const double miss_ray_length_m = std::min(options.miss_ray_length_m, kMaxRayLength_m);
 
   RangeData data;
   data.returns.reserve(scan.ranges.size());
@@ -56,8 +55,8 @@ RangeData ToRangeData(const LaserScan& scan, const RangeFilterOptions& options) 
     const double range_m = scan.ranges[k];
     const bool no_return = std::isnan(range_m) || range_m >= max_range_m;
     if (no_return) {
-      if (miss_ray_length_m > 0.0) {
-        data.misses.push_back(miss_ray_length_m * direction);
+      if (options.miss_ray_length_m > 0.0) {
+        data.misses.push_back(options.miss_ray_length_m * direction);
       }
     } else if (range_m >= min_range_m) {
       data.returns.push_back(range_m * direction);
