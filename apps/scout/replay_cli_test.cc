@@ -236,6 +236,12 @@ TEST_F(ReplayCli, BadInputIsAClearErrorWithoutPartialOutputs) {
                out.string());
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("nan.tum:2"), std::string::npos) << r.output;
+  // A TUM file with a column missing is read as TUM, not as a CARMEN log.
+  std::ofstream(Dir() / "seven.tum") << "100.0 0 0 0 0 0 1\n";
+  r = RunScout("replay " + Log() + " --reference " + (Dir() / "seven.tum").string() + " --out " +
+               out.string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("seven.tum:1: expected 8 finite numbers"), std::string::npos) << r.output;
   // A directory where a file belongs.
   r = RunScout("replay " + Log() + " --config " + Dir().string() + " --out " + out.string());
   EXPECT_EQ(r.exit_code, 2) << r.output;
@@ -252,7 +258,8 @@ TEST_F(ReplayCli, BadInputIsAClearErrorWithoutPartialOutputs) {
       << "FLASER 3 -1 -1 -1 0 0 0 0 0 0 1.0 h 1.0\nFLASER 3 -1 -1 -1 0 0 0 0 0 0 2.0 h 2.0\n";
   r = RunScout("replay " + (Dir() / "negative.log").string() + " --out " + out.string());
   EXPECT_EQ(r.exit_code, 2) << r.output;
-  EXPECT_NE(r.output.find("negative.log: none of the 2 scans could be inserted"), std::string::npos)
+  EXPECT_NE(r.output.find("negative.log: none of the 2 scans has a single return"),
+            std::string::npos)
       << r.output;
   EXPECT_FALSE(fs::exists(out / "summary.json"));
 }

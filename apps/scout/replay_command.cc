@@ -350,11 +350,12 @@ int RunReplay(const ReplayArgs& args) {
             << summary["peak_rss_mb"].get<double>() << " MiB peak\n";
   if (reference) {
     const nlohmann::json& r = summary["reference"];
-    std::cout << std::setprecision(3) << "reference: " << r["matched_scans"].get<int>()
-              << " nodes matched, ATE RMSE " << r["ate_rmse_m"].get<double>() << " m, RPE 1 s "
-              << r["rpe_1s_trans_m"].get<double>() << " m / " << r["rpe_1s_rot_deg"].get<double>()
-              << " deg, 10 s " << r["rpe_10s_trans_m"].get<double>() << " m / "
-              << r["rpe_10s_rot_deg"].get<double>() << " deg\n";
+    // Not measured (too few matched nodes for a pair that far apart) prints as a dash.
+    const auto value = [&r](const char* key) { return FixedOrDash(r[key].get<double>(), 3); };
+    std::cout << "reference: " << r["matched_scans"].get<int>() << " nodes matched, ATE RMSE "
+              << value("ate_rmse_m") << " m, RPE 1 s " << value("rpe_1s_trans_m") << " m / "
+              << value("rpe_1s_rot_deg") << " deg, 10 s " << value("rpe_10s_trans_m") << " m / "
+              << value("rpe_10s_rot_deg") << " deg\n";
   }
   {
     const nlohmann::json& c = summary["consistency"];

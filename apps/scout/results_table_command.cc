@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "scout/common/atomic_file.h"
+#include "scout/common/error.h"
 #include "scout/report/results_tables.h"
 #include "scout/report/sweep_figures.h"
 
@@ -29,7 +30,12 @@ int RunResultsTable(const ResultsTableArgs& args) {
   if (!args.figures_dir.empty()) {
     std::vector<report::RunData> runs;
     for (const std::filesystem::path& dir : dirs) runs.push_back(report::ReadRun(dir));
-    std::filesystem::create_directories(args.figures_dir);
+    std::error_code ec;
+    std::filesystem::create_directories(args.figures_dir, ec);
+    if (ec || !std::filesystem::is_directory(args.figures_dir)) {
+      throw InputError("--figures '" + args.figures_dir + "': cannot create the directory (" +
+                       (ec ? ec.message() : std::string("a file of that name exists")) + ")");
+    }
     for (const report::Figure& figure : report::SweepFigures(runs)) {
       WriteTextFileAtomically(std::filesystem::path(args.figures_dir) / (figure.name + ".svg"),
                               figure.svg);

@@ -12,6 +12,7 @@
 #include "scout/common/input_limits.h"
 #include "scout/io/dataset_warnings.h"
 #include "scout/io/gzip_file.h"
+#include "scout/io/time_order.h"
 
 namespace scout::io {
 namespace {
@@ -90,6 +91,7 @@ class CarmenParser {
 
   // Called once after the last line.
   void Finish() {
+    DropOutOfTimeOrder();
     InferFlaserRangeMax();
     WarnIfTimesCoarse();
     warnings_.Finish(source_);
@@ -136,7 +138,6 @@ class CarmenParser {
     if (AddScan(std::move(scan), geometry::Rigid2d(x, y, theta),
                 geometry::Rigid2d(odom_x, odom_y, odom_theta), "FLASER")) {
       ++counts_->flaser;
-      flaser_scans_.push_back(dataset_->scans.size() - 1);
     }
     return std::nullopt;
   }
@@ -153,9 +154,25 @@ class CarmenParser {
              " beams and " + std::to_string(*m) + " remissions, found " + std::to_string(f.size());
     }
     sensor::LaserScan scan;
-    double start_angle, resolution, max_range;
-    if (auto problem = Numbers(f, {{2, &start_angle}, {4, &resolution}, {5, &max_range}})) {
+    double start_angle, field_of_view, resolution, max_range;
+    if (auto problem = Numbers(
+            f, {{2, &start_angle}, {3, &field_of_view}, {4, &resolution}, {5, &max_range}})) {
       return problem;
+    }
+    if (resolution == 0.0) return "expected a nonzero angular_resolution as field 5, found 0";
+    if (!(max_range > 0.0)) {
+      return "expected a positive maximum_range as field 6, found '" + std::string(f[5]) + "'";
+    }
+    // Loggers write the field of view as (n - 1) or n resolution steps.
+    const double steps = static_cast<double>(*n);
+    const double step = std::abs(resolution);
+    if (*n > 0 && std::abs(std::abs(field_of_view) - step * (steps - 1.0)) > 0.5 * step &&
+        std::abs(std::abs(field_of_view) - step * steps) > 0.5 * step) {
+      warnings_.Add("scans whose field of view disagrees with their beams",
+                    Where() + ": ROBOTLASER1 field_of_view " + FormatNumber(field_of_view) +
+                        " rad is not " + std::to_string(*n) + " (or " + std::to_string(*n - 1) +
+                        ") steps of angular_resolution " + FormatNumber(resolution) +
+                        " rad; the beams are placed by angular_resolution");
     }
     scan.ranges.resize(*n);
     for (std::size_t k = 0; k < *n; ++k) {
@@ -193,16 +210,8 @@ class CarmenParser {
     if (auto problem = Numbers(f, {{1, &x}, {2, &y}, {3, &theta}, {7, &time, kMaxTimeS}})) {
       return problem;
     }
-    if (!dataset_->odometry.empty() && time < dataset_->odometry.back().time_s) {
-      ++counts_->backwards_odometry;
-      warnings_.Add("odometry messages with backwards time",
-                    Where() + ": ODOM at t=" + FormatNumber(time) +
-                        " s is earlier than the previous one (t=" +
-                        FormatNumber(dataset_->odometry.back().time_s) +
-                        " s); dropped (expected non-decreasing ipc_timestamp)");
-      return std::nullopt;
-    }
     dataset_->odometry.push_back({time, geometry::Rigid2d(x, y, theta)});
+    odometry_lines_.push_back(line_number_);
     ++counts_->odom;
     return std::nullopt;
   }
@@ -236,7 +245,7 @@ class CarmenParser {
     return std::nullopt;
   }
 
-  // Appends 'scan' unless it has no beams or goes back in time (warnings).
+  // Appends 'scan' unless it has no beams (a warning).
   bool AddScan(sensor::LaserScan scan, const geometry::Rigid2d& pose,
                const geometry::Rigid2d& odometry, const char* kind) {
     if (scan.ranges.empty()) {
@@ -245,25 +254,72 @@ class CarmenParser {
                     Where() + ": " + kind + " with 0 beams skipped (expected at least one range)");
       return false;
     }
-    if (!dataset_->scans.empty() && scan.time_s < dataset_->scans.back().time_s) {
-      ++counts_->backwards_scans;
-      warnings_.Add("scans with backwards time",
-                    Where() + ": " + kind + " at t=" + FormatNumber(scan.time_s) +
-                        " s is earlier than the previous scan (t=" +
-                        FormatNumber(dataset_->scans.back().time_s) +
-                        " s); dropped (expected non-decreasing ipc_timestamp)");
-      return false;
-    }
     dataset_->scan_odometry.push_back({scan.time_s, odometry});
     dataset_->scans.push_back(std::move(scan));
     dataset_->scan_poses.push_back(pose);
+    scan_lines_.push_back({line_number_, kind});
     return true;
   }
 
+  // Keeps each stream's longest run in time order (see time_order.h).
+  void DropOutOfTimeOrder() {
+    std::vector<double> times;
+    for (const sensor::LaserScan& scan : dataset_->scans) times.push_back(scan.time_s);
+    const std::vector<bool> keep_scan = LongestTimeOrder(times);
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < keep_scan.size(); ++i) {
+      const auto& [line, kind] = scan_lines_[i];
+      if (!keep_scan[i]) {
+        ++counts_->backwards_scans;
+        --(kind == std::string_view("FLASER") ? counts_->flaser : counts_->robotlaser1);
+        warnings_.Add("scans out of time order",
+                      source_ + ":" + std::to_string(line) + ": " + kind +
+                          " at t=" + FormatNumber(dataset_->scans[i].time_s) +
+                          " s is out of time order with the scans around it; dropped (expected "
+                          "non-decreasing ipc_timestamp)");
+        continue;
+      }
+      if (kept != i) {  // a vector moved onto itself would be left empty
+        dataset_->scans[kept] = std::move(dataset_->scans[i]);
+        dataset_->scan_poses[kept] = dataset_->scan_poses[i];
+        dataset_->scan_odometry[kept] = dataset_->scan_odometry[i];
+        scan_lines_[kept] = scan_lines_[i];
+      }
+      ++kept;
+    }
+    dataset_->scans.resize(kept);
+    dataset_->scan_poses.resize(kept);
+    dataset_->scan_odometry.resize(kept);
+    scan_lines_.resize(kept);
+
+    times.clear();
+    for (const sensor::Odometry& odometry : dataset_->odometry) times.push_back(odometry.time_s);
+    const std::vector<bool> keep_odometry = LongestTimeOrder(times);
+    kept = 0;
+    for (std::size_t i = 0; i < keep_odometry.size(); ++i) {
+      if (!keep_odometry[i]) {
+        ++counts_->backwards_odometry;
+        --counts_->odom;
+        warnings_.Add("odometry messages out of time order",
+                      source_ + ":" + std::to_string(odometry_lines_[i]) +
+                          ": ODOM at t=" + FormatNumber(dataset_->odometry[i].time_s) +
+                          " s is out of time order with the messages around it; dropped "
+                          "(expected non-decreasing ipc_timestamp)");
+        continue;
+      }
+      dataset_->odometry[kept++] = dataset_->odometry[i];
+    }
+    dataset_->odometry.resize(kept);
+  }
+
   void InferFlaserRangeMax() {
+    std::vector<std::size_t> flaser_scans;
+    for (std::size_t i = 0; i < scan_lines_.size(); ++i) {
+      if (scan_lines_[i].second == std::string_view("FLASER")) flaser_scans.push_back(i);
+    }
     float largest = 0.f;
     std::size_t repeats = 0;
-    for (const std::size_t i : flaser_scans_) {
+    for (const std::size_t i : flaser_scans) {
       for (const float r : dataset_->scans[i].ranges) {
         if (!std::isfinite(r) || r < largest) continue;
         repeats = r == largest ? repeats + 1 : 1;
@@ -272,7 +328,7 @@ class CarmenParser {
     }
     const float range_max =
         repeats >= kMinSaturatedReadings ? kSaturationBand * largest : kSickRangeMaxM;
-    for (const std::size_t i : flaser_scans_) dataset_->scans[i].range_max_m = range_max;
+    for (const std::size_t i : flaser_scans) dataset_->scans[i].range_max_m = range_max;
   }
 
   void WarnIfTimesCoarse() {
@@ -293,7 +349,10 @@ class CarmenParser {
   CarmenLogCounts* counts_;
   DatasetWarnings warnings_;
   std::size_t line_number_ = 0;
-  std::vector<std::size_t> flaser_scans_;  // indices into dataset_->scans
+  // The line and message kind of each scan, and the line of each odometry
+  // message, in the dataset's order.
+  std::vector<std::pair<std::size_t, const char*>> scan_lines_;
+  std::vector<std::size_t> odometry_lines_;
 };
 
 }  // namespace
@@ -324,12 +383,22 @@ Dataset ReadCarmenLog(const fs::path& path, CarmenLogCounts* counts) {
                                 " scans read up to there");
   }
   parser.Finish();
+  const std::size_t read_scans = dataset.scans.size() + counts->backwards_scans;
+  if (!dataset.scans.empty() && 2 * dataset.scans.size() < read_scans) {
+    throw InputError(source + ": only " + std::to_string(dataset.scans.size()) + " of " +
+                     std::to_string(read_scans) +
+                     " scans are in time order; expected non-decreasing ipc_timestamp (are the "
+                     "lines reversed, or the times corrupt?)");
+  }
   if (dataset.scans.empty()) {
     throw InputError(source + ": no usable laser scan in " + std::to_string(reader.line_number()) +
                      " lines (expected FLASER or ROBOTLASER1 lines of a CARMEN log; " +
                      std::to_string(counts->malformed_lines) + " malformed, " +
                      std::to_string(counts->backwards_scans + counts->zero_beam_scans) +
-                     " scans dropped)");
+                     " scans dropped" +
+                     (dataset.warnings.empty() ? std::string()
+                                               : "; first problem: " + dataset.warnings.front()) +
+                     ")");
   }
   return dataset;
 }

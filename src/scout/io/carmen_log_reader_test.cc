@@ -67,7 +67,7 @@ TEST(CarmenLogReader, ReadsFlaserRobotLaserAndOdom) {
       "# message formats defined: PARAM FLASER ODOM ROBOTLASER1\n"
       "PARAM robot_use_laser on nohost 0\n" +
       Odom(0, 0, 0, 0.5) + Flaser(4, 2.5, 1.0, 2.0, 0.5, 1.0) +
-      "ROBOTLASER1 0 -1.5 3.0 0.5 30.0 0.01 0 3 1.0 nan inf 2 7 8 "
+      "ROBOTLASER1 0 -1.5 1.0 0.5 30.0 0.01 0 3 1.0 nan inf 2 7 8 "
       "9 9 9 3.0 4.0 -0.25 0 0 0 0 0 2.0 host 2.0\n" +
       Odom(1.0, 0.5, 0.25, 2.5) + Flaser(5, 3.0, 2.0, 2.0, 0.0, 3.0);
   CarmenLogCounts counts;
@@ -169,6 +169,55 @@ TEST(CarmenLogReader, MessagesGoingBackInTimeAreDroppedPerStream) {
   EXPECT_EQ(counts.backwards_odometry, 1u);
   EXPECT_TRUE(AnyWarningContains(dataset, path.string() + ":4: FLASER at t=2"));
   EXPECT_TRUE(AnyWarningContains(dataset, path.string() + ":5: ODOM at t=0"));
+}
+
+TEST(CarmenLogReader, OneTimeFarAheadLosesOnlyItsOwnLine) {
+  const TestTempDirectory dir;
+  std::string log;
+  for (int i = 0; i < 6; ++i) log += Flaser(2, 1.0, 0, 0, 0, i == 2 ? 1e9 : 1.0 + i);
+  const fs::path path = dir.Write("jump.log", log);
+  CarmenLogCounts counts;
+  const Dataset dataset = ReadCarmenLog(path, &counts);
+  ASSERT_EQ(dataset.scans.size(), 5u);
+  EXPECT_DOUBLE_EQ(dataset.scans[2].time_s, 4.0);
+  EXPECT_EQ(dataset.scan_poses.size(), 5u);
+  EXPECT_EQ(counts.flaser, 5u);
+  EXPECT_EQ(counts.backwards_scans, 1u);
+  EXPECT_TRUE(AnyWarningContains(
+      dataset, path.string() + ":3: FLASER at t=1000000000 s is out of time order"));
+}
+
+TEST(CarmenLogReader, ReversedTimesAreAnErrorNotASingleScan) {
+  const TestTempDirectory dir;
+  std::string log;
+  for (int i = 0; i < 6; ++i) log += Flaser(2, 1.0, 0, 0, 0, 10.0 - i);
+  const fs::path path = dir.Write("reversed.log", log);
+  EXPECT_NE(ThrownMessage(path).find("reversed.log: only 1 of 6 scans are in time order"),
+            std::string::npos)
+      << ThrownMessage(path);
+}
+
+TEST(CarmenLogReader, RobotLaserWithoutAResolutionIsMalformedAndAFieldOfViewMismatchIsNamed) {
+  const TestTempDirectory dir;
+  const std::string tail = " 0 0 0 1 2 0.5 0 0 0 0 0 ";
+  const fs::path path = dir.Write(
+      "robotlaser.log", "ROBOTLASER1 0 -1 1.0 0 30 0.01 0 3 1 2 3 0" + tail + "1.0 h 1.0\n" +
+                            "ROBOTLASER1 0 -1 1.0 0.5 0 0.01 0 3 1 2 3 0" + tail + "2.0 h 2.0\n" +
+                            "ROBOTLASER1 0 -1 1.0 0.5 30 0.01 0 3 1 2 3 0" + tail + "3.0 h 3.0\n" +
+                            "ROBOTLASER1 0 -1 3.0 0.5 30 0.01 0 3 1 2 3 0" + tail + "4.0 h 4.0\n");
+  CarmenLogCounts counts;
+  const Dataset dataset = ReadCarmenLog(path, &counts);
+  EXPECT_EQ(dataset.scans.size(), 2u);
+  EXPECT_EQ(counts.malformed_lines, 2u);
+  EXPECT_TRUE(AnyWarningContains(dataset,
+                                 ":1: malformed ROBOTLASER1 message skipped: expected a "
+                                 "nonzero angular_resolution"));
+  EXPECT_TRUE(AnyWarningContains(dataset,
+                                 ":2: malformed ROBOTLASER1 message skipped: expected a "
+                                 "positive maximum_range"));
+  EXPECT_TRUE(AnyWarningContains(dataset,
+                                 ":4: ROBOTLASER1 field_of_view 3 rad is not 3 (or 2) "
+                                 "steps of angular_resolution 0.5 rad"));
 }
 
 TEST(CarmenLogReader, AbsurdBeamCountsAreMalformedLines) {

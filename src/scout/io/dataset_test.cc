@@ -38,6 +38,29 @@ TEST(Dataset, NameDropsDatasetSuffixes) {
   EXPECT_EQ(DatasetName("notes.txt"), "notes.txt");
 }
 
+TEST(Dataset, ScansWithoutASingleReturnAreAnErrorAndABagNameIsExplained) {
+  const TestTempDirectory dir;
+  const std::string blind =
+      "FLASER 3 nan nan 0 0 0 0 0 0 0 1.0 h 1.0\n"
+      "FLASER 3 0 inf nan 0 0 0 0 0 0 2.0 h 2.0\n";
+  try {
+    LoadDataset(dir.Write("blind.log", blind));
+    ADD_FAILURE() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("blind.log: none of the 2 scans has a single return"),
+              std::string::npos)
+        << e.what();
+  }
+  try {
+    LoadDataset(dir.Write("broken.bag", "not a bag at all\n"));
+    ADD_FAILURE() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("named like a ROS bag but does not start with"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(Dataset, DetectsCarmenLogsByContentAndRejectsOtherFiles) {
   const TestTempDirectory dir;
   const std::string log = "FLASER 2 1 1 0 0 0 0 0 0 1.0 h 1.0\n";

@@ -105,6 +105,10 @@ OutputDirectory::OutputDirectory(const std::filesystem::path& dir, Mode mode,
                        command_ + "` would replace; choose another --out, or delete them first");
     }
   }
+  if (std::filesystem::exists(dir_, ec) && !std::filesystem::is_directory(dir_, ec)) {
+    throw InputError("output directory '" + dir_.string() +
+                     "' is an existing file; expected a directory, or a path to create one");
+  }
   created_ = !std::filesystem::exists(dir_, ec);
   std::filesystem::create_directories(dir_, ec);
   if (ec || !std::filesystem::is_directory(dir_)) {
@@ -146,6 +150,21 @@ std::filesystem::path OutputDirectory::Stage(const std::string& name) {
 }
 
 void OutputDirectory::Commit() {
+  // Check every destination before moving the first file, so that one in the
+  // way does not leave the directory half old, half new.
+  for (const std::string& name : names_) {
+    std::error_code ec;
+    const std::filesystem::path destination = dir_ / name;
+    const std::filesystem::path parent = destination.parent_path();
+    if (std::filesystem::exists(parent, ec) && !std::filesystem::is_directory(parent, ec)) {
+      throw InputError("cannot move '" + name + "' into '" + dir_.string() + "': '" +
+                       parent.string() + "' is a file, not a directory; nothing was replaced");
+    }
+    if (std::filesystem::is_directory(std::filesystem::symlink_status(destination, ec))) {
+      throw InputError("cannot move '" + name + "' into '" + dir_.string() + "': '" +
+                       destination.string() + "' is a directory; nothing was replaced");
+    }
+  }
   for (const std::string& name : names_) {
     std::error_code ec;
     std::filesystem::create_directories((dir_ / name).parent_path(), ec);

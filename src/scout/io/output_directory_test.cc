@@ -218,5 +218,43 @@ TEST(OutputDirectory, RejectsADirectoryThatCannotBeCreated) {
   fs::remove_all(dir);
 }
 
+TEST(OutputDirectory, AnExistingFileIsNamedAsSuch) {
+  const fs::path dir = FreshDir();
+  fs::create_directories(dir);
+  WriteTextFileAtomically(dir / "file", "x");
+  try {
+    OutputDirectory bad(dir / "file");
+    ADD_FAILURE() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("is an existing file"), std::string::npos) << e.what();
+  }
+  fs::remove_all(dir);
+}
+
+TEST(OutputDirectory, ADirectoryInTheWayOfOneFileStopsTheCommitBeforeAnyFileIsReplaced) {
+  const fs::path dir = FreshDir();
+  {
+    OutputDirectory out(dir);
+    WriteTextFileAtomically(out.Stage("a.txt"), "old");
+    out.Commit();
+  }
+  fs::create_directories(dir / "report.html");
+  OutputDirectory out(dir);
+  WriteTextFileAtomically(out.Stage("a.txt"), "new");
+  WriteTextFileAtomically(out.Stage("report.html"), "page");
+  try {
+    out.Commit();
+    ADD_FAILURE() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("is a directory; nothing was replaced"), std::string::npos)
+        << e.what();
+  }
+  std::ifstream in(dir / "a.txt");
+  std::string text;
+  in >> text;
+  EXPECT_EQ(text, "old");
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace scout::io

@@ -1,9 +1,8 @@
 #include "scout/io/replay_reference.h"
 
-#include <cstdlib>
 #include <fstream>
-#include <sstream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "scout/common/error.h"
@@ -14,10 +13,10 @@
 namespace scout::io {
 namespace {
 
-// True if the first non-comment line of 'path' has eight fields, the first
-// a number (CARMEN lines start with a message name), or if there is no such
-// line: then the TUM reader says what is missing. A NaN in a TUM line is
-// reported by the TUM reader with its line number.
+// True if the first non-comment line of 'path' starts like a number (CARMEN
+// lines start with a message name), or if there is no such line: then the TUM
+// reader names the line and says what it expected (8 numbers), whatever the
+// line holds.
 bool LooksLikeTum(const std::filesystem::path& path) {
   RequireRegularFile(path, "a reference trajectory (TUM file or CARMEN log)");
   std::ifstream in(path);
@@ -33,15 +32,9 @@ bool LooksLikeTum(const std::filesystem::path& path) {
   std::string line;
   while (std::getline(in, line)) {
     if (line.rfind("#ROSBAG", 0) == 0) return false;
-    if (line.empty() || line[0] == '#') continue;
-    std::istringstream fields(line);
-    std::vector<std::string> tokens;
-    std::string token;
-    while (fields >> token) tokens.push_back(token);
-    if (tokens.empty()) continue;
-    char* end = nullptr;
-    std::strtod(tokens[0].c_str(), &end);
-    return tokens.size() == 8 && end == tokens[0].c_str() + tokens[0].size();
+    const size_t first = line.find_first_not_of(" \t\r");
+    if (first == std::string::npos || line[first] == '#') continue;
+    return std::string_view("0123456789+-.%").find(line[first]) != std::string_view::npos;
   }
   return true;
 }

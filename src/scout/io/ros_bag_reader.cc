@@ -27,6 +27,7 @@ static_assert(__cplusplus == 201703L, "compile ros_bag_reader.cc with scout_ros1
 #include "scout/common/input_limits.h"
 #include "scout/io/dataset_warnings.h"
 #include "scout/io/gzip_file.h"
+#include "scout/io/time_order.h"
 
 // Length probes: read through rosbag like messages, they walk a LaserScan's
 // or an Odometry's serialised fields for the lengths of its strings and
@@ -161,6 +162,10 @@ double StampOrBagTime(const ros::Time& stamp, const ros::Time& bag_time) {
   return stamp.isZero() ? bag_time.toSec() : stamp.toSec();
 }
 
+// A stamp's nanoseconds must be below 1e9 (deserialised stamps are not
+// normalised; 0xFFFFFFFF would shift the time by 4 s).
+bool ValidStamp(const ros::Time& stamp) { return stamp.nsec < 1000000000u; }
+
 double YawOf(const geometry_msgs::Quaternion& q) {
   return std::atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z));
 }
@@ -172,16 +177,16 @@ class BagConverter {
 
   void AddScan(const sensor_msgs::LaserScan& message, const ros::Time& bag_time) {
     const double time = StampOrBagTime(message.header.stamp, bag_time);
+    if (!ValidStamp(message.header.stamp)) {
+      warnings_.Add("messages with invalid stamps",
+                    source_ + ": LaserScan at bag time " + FormatNumber(bag_time.toSec()) +
+                        " s has header.stamp.nsec " + std::to_string(message.header.stamp.nsec) +
+                        "; skipped (expected nanoseconds below 1e9)");
+      return;
+    }
     if (message.ranges.empty()) {
       warnings_.Add("scans without beams", source_ + ": LaserScan at t=" + FormatNumber(time) +
                                                " s has 0 beams; skipped (expected ranges)");
-      return;
-    }
-    if (!dataset_->scans.empty() && time < dataset_->scans.back().time_s) {
-      warnings_.Add("scans with backwards time",
-                    source_ + ": LaserScan at t=" + FormatNumber(time) +
-                        " s is earlier than the previous scan (t=" +
-                        FormatNumber(dataset_->scans.back().time_s) + " s); dropped");
       return;
     }
     if (!std::isfinite(message.angle_min) || !std::isfinite(message.angle_increment) ||
@@ -191,6 +196,14 @@ class BagConverter {
                         FormatNumber(message.angle_min) + " and angle_increment " +
                         FormatNumber(message.angle_increment) +
                         "; skipped (expected finite angles and a nonzero increment)");
+      return;
+    }
+    if (!(message.range_min >= 0.f) || !(message.range_max > message.range_min)) {
+      warnings_.Add("scans with unusable range limits",
+                    source_ + ": LaserScan at t=" + FormatNumber(time) + " s has range_min " +
+                        FormatNumber(message.range_min) + " and range_max " +
+                        FormatNumber(message.range_max) +
+                        "; skipped (expected 0 <= range_min < range_max)");
       return;
     }
     sensor::LaserScan scan;
@@ -205,22 +218,27 @@ class BagConverter {
 
   void AddOdometry(const nav_msgs::Odometry& message, const ros::Time& bag_time) {
     const double time = StampOrBagTime(message.header.stamp, bag_time);
-    if (!dataset_->odometry.empty() && time < dataset_->odometry.back().time_s) {
-      warnings_.Add("odometry messages with backwards time",
-                    source_ + ": Odometry at t=" + FormatNumber(time) +
-                        " s is earlier than the previous one (t=" +
-                        FormatNumber(dataset_->odometry.back().time_s) + " s); dropped");
+    if (!ValidStamp(message.header.stamp)) {
+      warnings_.Add("messages with invalid stamps",
+                    source_ + ": Odometry at bag time " + FormatNumber(bag_time.toSec()) +
+                        " s has header.stamp.nsec " + std::to_string(message.header.stamp.nsec) +
+                        "; skipped (expected nanoseconds below 1e9)");
       return;
     }
     const geometry_msgs::Pose& pose = message.pose.pose;
-    const double yaw = YawOf(pose.orientation);
+    const geometry_msgs::Quaternion& q = pose.orientation;
+    // A zero or garbage quaternion has no heading (atan2(0, 1) would say 0).
+    const double norm = std::sqrt(q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w);
+    const double yaw = YawOf(q);
     if (!(std::abs(pose.position.x) <= kMaxInputCoordinateM) ||
-        !(std::abs(pose.position.y) <= kMaxInputCoordinateM) || !std::isfinite(yaw)) {
+        !(std::abs(pose.position.y) <= kMaxInputCoordinateM) || !std::isfinite(yaw) ||
+        !(std::abs(norm - 1.0) <= 0.1)) {
       warnings_.Add("odometry messages with unusable poses",
                     source_ + ": Odometry at t=" + FormatNumber(time) + " s at (" +
                         FormatNumber(pose.position.x) + ", " + FormatNumber(pose.position.y) +
-                        "); dropped (expected finite coordinates within 1000 km and a finite "
-                        "orientation)");
+                        ") with an orientation quaternion of norm " + FormatNumber(norm) +
+                        "; dropped (expected finite coordinates within 1000 km and a unit "
+                        "quaternion)");
       return;
     }
     dataset_->odometry.push_back({time, geometry::Rigid2d(pose.position.x, pose.position.y, yaw)});
@@ -232,7 +250,48 @@ class BagConverter {
                                              why + "); skipped");
   }
 
-  void Finish() { warnings_.Finish(source_); }
+  // Keeps each stream's longest run in time order (see time_order.h); throws
+  // InputError if that leaves fewer than half of the scans.
+  void Finish() {
+    std::vector<double> times;
+    for (const sensor::LaserScan& scan : dataset_->scans) times.push_back(scan.time_s);
+    const std::vector<bool> keep_scan = LongestTimeOrder(times);
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < keep_scan.size(); ++i) {
+      if (!keep_scan[i]) {
+        warnings_.Add("scans out of time order",
+                      source_ + ": LaserScan at t=" + FormatNumber(times[i]) +
+                          " s is out of time order with the scans around it; dropped (expected "
+                          "non-decreasing header stamps)");
+        continue;
+      }
+      if (kept != i) dataset_->scans[kept] = std::move(dataset_->scans[i]);  // not onto itself
+      ++kept;
+    }
+    dataset_->scans.resize(kept);
+    if (2 * kept < keep_scan.size()) {
+      throw InputError(source_ + ": only " + std::to_string(kept) + " of " +
+                       std::to_string(keep_scan.size()) +
+                       " scans are in time order; expected non-decreasing header stamps (are "
+                       "the stamps corrupt?)");
+    }
+    times.clear();
+    for (const sensor::Odometry& odometry : dataset_->odometry) times.push_back(odometry.time_s);
+    const std::vector<bool> keep_odometry = LongestTimeOrder(times);
+    kept = 0;
+    for (std::size_t i = 0; i < keep_odometry.size(); ++i) {
+      if (!keep_odometry[i]) {
+        warnings_.Add("odometry messages out of time order",
+                      source_ + ": Odometry at t=" + FormatNumber(times[i]) +
+                          " s is out of time order with the messages around it; dropped "
+                          "(expected non-decreasing header stamps)");
+        continue;
+      }
+      dataset_->odometry[kept++] = dataset_->odometry[i];
+    }
+    dataset_->odometry.resize(kept);
+    warnings_.Finish(source_);
+  }
 
  private:
   std::string source_;
@@ -249,7 +308,9 @@ void ReadPlainBag(const fs::path& bag_path, const std::string& source,
       ChooseTopic(topics, kScanType, options.scan_topic, source, &dataset->warnings);
   if (!scan_topic) {
     throw InputError(source + ": no " + std::string(kScanType) +
-                     " topic in the bag; expected at least one. Topics: " + Describe(topics, ""));
+                     " topic in the bag; expected at least one. " +
+                     (topics.empty() ? std::string("The bag holds no messages")
+                                     : "Topics: " + Describe(topics, "")));
   }
   const std::optional<BagTopic> odometry_topic =
       ChooseTopic(topics, kOdometryType, options.odometry_topic, source, &dataset->warnings);
@@ -287,8 +348,12 @@ void ReadPlainBag(const fs::path& bag_path, const std::string& source,
   }
   converter.Finish();
   if (dataset->scans.empty()) {
+    // The reasons are in the warnings, which an error would not show.
     throw InputError(source + ": topic " + scan_topic->name +
-                     " holds no usable scan; expected LaserScan messages with ranges");
+                     " holds no usable scan; expected LaserScan messages with ranges" +
+                     (dataset->warnings.empty()
+                          ? std::string()
+                          : " (first problem: " + dataset->warnings.front() + ")"));
   }
 }
 
@@ -302,7 +367,8 @@ auto WithInputErrors(const std::string& source, Read read) {
     throw;
   } catch (const std::exception& e) {
     throw InputError(source + ": not a readable ROS 1 bag (" + e.what() +
-                     "); expected a complete, indexed bag of format 2.0");
+                     "); expected a complete, indexed bag of format 2.0 (a bag cut short loses "
+                     "its index at the end: `rosbag reindex` rebuilds it)");
   }
 }
 

@@ -208,6 +208,49 @@ TEST(RosBagReader, StampsGoingBackAndEmptyScansAreDroppedWithWarnings) {
   EXPECT_TRUE(AnyWarningContains(dataset, "has 0 beams"));
 }
 
+TEST(RosBagReader, OneStampFarAheadLosesOnlyItselfAndInvalidStampsAndPosesAreNamed) {
+  const TestTempDirectory dir;
+  const fs::path path = dir.path() / "stamps.bag";
+  {
+    rosbag::Bag bag(path.string(), rosbag::bagmode::Write);
+    for (int i = 0; i < 6; ++i) {
+      bag.write("/scan", ros::Time(1.0 + i), Scan(i == 2 ? 4294967295.0 : 1.0 + i, 3));
+      bag.write("/odom", ros::Time(1.0 + i), Odom(i == 3 ? 1e5 : 1.0 + i, i, 0, 0));
+    }
+    sensor_msgs::LaserScan bad_nsec = Scan(7.0, 3);
+    bad_nsec.header.stamp.nsec = 4294967295u;
+    bag.write("/scan", ros::Time(7.0), bad_nsec);
+    sensor_msgs::LaserScan inverted_limits = Scan(8.0, 3);
+    inverted_limits.range_min = 30.f;
+    bag.write("/scan", ros::Time(8.0), inverted_limits);
+    nav_msgs::Odometry zero_quaternion = Odom(7.0, 6, 0, 0);
+    zero_quaternion.pose.pose.orientation.w = 0.0;
+    bag.write("/odom", ros::Time(7.0), zero_quaternion);
+  }
+  const Dataset dataset = ReadRosBag(path);
+  ASSERT_EQ(dataset.scans.size(), 5u);
+  EXPECT_DOUBLE_EQ(dataset.scans[2].time_s, 4.0);
+  ASSERT_EQ(dataset.odometry.size(), 5u);
+  EXPECT_DOUBLE_EQ(dataset.odometry[3].time_s, 5.0);
+  EXPECT_TRUE(AnyWarningContains(dataset, "LaserScan at t=4294967295 s is out of time order"));
+  EXPECT_TRUE(AnyWarningContains(dataset, "Odometry at t=100000 s is out of time order"));
+  EXPECT_TRUE(AnyWarningContains(dataset, "has header.stamp.nsec 4294967295; skipped"));
+  EXPECT_TRUE(AnyWarningContains(dataset, "has range_min 30 and range_max 20; skipped"));
+  EXPECT_TRUE(AnyWarningContains(dataset, "with an orientation quaternion of norm 0; dropped"));
+}
+
+TEST(RosBagReader, ScansMostlyOutOfTimeOrderAreAnError) {
+  const TestTempDirectory dir;
+  const fs::path path = dir.path() / "reversed.bag";
+  {
+    rosbag::Bag bag(path.string(), rosbag::bagmode::Write);
+    for (int i = 0; i < 5; ++i) bag.write("/scan", ros::Time(1.0 + i), Scan(10.0 - i, 3));
+  }
+  EXPECT_NE(ThrownMessage(path).find("reversed.bag: only 1 of 5 scans are in time order"),
+            std::string::npos)
+      << ThrownMessage(path);
+}
+
 TEST(RosBagReader, UnusableAnglesOdometryAndCorruptMessagesAreSkippedWithWarnings) {
   const TestTempDirectory dir;
   const fs::path path = dir.path() / "odd.bag";
@@ -257,7 +300,9 @@ TEST(RosBagReader, UnusableAnglesOdometryAndCorruptMessagesAreSkippedWithWarning
   EXPECT_TRUE(AnyWarningContains(dataset,
                                  "message on /scan at bag time 4 s is corrupt (ranges "
                                  "length 1073741823 runs past the"));
-  EXPECT_TRUE(AnyWarningContains(dataset, "Odometry at t=2 s at (1000000000000, 0); dropped"));
+  EXPECT_TRUE(AnyWarningContains(
+      dataset,
+      "Odometry at t=2 s at (1000000000000, 0) with an orientation quaternion of norm 1; dropped"));
 }
 
 TEST(RosBagReader, ARecordDataLengthBeyondItsChunkDoesNotReadPastIt) {

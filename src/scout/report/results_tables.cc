@@ -400,9 +400,34 @@ TableKind ParseTableKind(const std::string& text) {
   throw InputError("table kind '" + text + "': expected replay, bench or explore");
 }
 
+namespace {
+
+// The command that wrote a run, told by its summary's keys; nullptr if none
+// fits. A table of the wrong kind would show blanks and zeros, not an error.
+const char* CommandOfSummary(const nlohmann::json& summary) {
+  if (summary.contains("terminated") && summary.contains("goals_policy")) return "explore";
+  if (summary.contains("dataset")) return "replay";
+  if (summary.contains("world") && summary.contains("epsilon_m")) return "frontier-bench";
+  return nullptr;
+}
+
+}  // namespace
+
 std::string ResultsTables(TableKind kind, const std::vector<std::filesystem::path>& dirs) {
   std::ostringstream out;
   const std::vector<RunData> runs = ReadRuns(dirs, out);
+  const char* wanted = kind == TableKind::kReplay  ? "replay"
+                       : kind == TableKind::kBench ? "frontier-bench"
+                                                   : "explore";
+  for (const RunData& run : runs) {
+    // A summary that fits no command (written by hand) is taken as it is.
+    const char* command = CommandOfSummary(run.summary);
+    if (command != nullptr && std::string(command) != wanted) {
+      throw InputError((run.dir / "summary.json").string() + ": a run of `scout " +
+                       std::string(command) + "`; expected runs of `scout " + wanted +
+                       "` for these tables");
+    }
+  }
   switch (kind) {
     case TableKind::kReplay:
       AppendReplay(runs, out);

@@ -188,6 +188,10 @@ TEST(ResultsTables, SummaryValueOfTheWrongTypeNamesTheFileAndKey) {
       {R"({"frontier": {"strategies": {"exact": {"P": "x"}}}})",
        "key 'frontier/strategies/exact/P' is \"x\", expected a number"},
       {R"({"reference": {"ate_rmse_m": [1]}})", "key 'reference/ate_rmse_m' is [1]"},
+      {R"({"scans": -5})", "key 'scans' is -5, expected a number >= 0"},
+      {R"({"scans": 1e999})", "not valid JSON"},
+      {R"({"dataset": "intel", "scans": 3})",
+       "a run of `scout replay`; expected runs of `scout explore`"},
   };
   const std::filesystem::path dir = FreshDir("tables_wrong_type");
   for (const Case& c : cases) {

@@ -15,7 +15,8 @@ namespace {
 
 int64_t Count(const CsvTable& table, int row, const std::string& column) {
   const double v = table.Number(row, column);
-  if (v < 0 || v != std::floor(v)) {
+  // Beyond 2^53 a double no longer counts in ones (and 1e23 would not fit int64_t).
+  if (v < 0 || v != std::floor(v) || v > 9007199254740992.0) {
     throw InputError(table.Where(row) + ": column '" + column + "' is '" + table.Text(row, column) +
                      "', expected a count (integer >= 0)");
   }
@@ -66,9 +67,17 @@ constexpr const char* kSummaryNumbers[] = {"seed",
 void CheckNumbers(const nlohmann::json& node, const std::vector<std::string>& segments, size_t at,
                   const std::string& where, const std::filesystem::path& path) {
   if (at == segments.size()) {
-    if (node.is_number() || node.is_null()) return;
-    throw InputError(path.string() + ": key '" + where + "' is " + node.dump() +
-                     ", expected a number");
+    if (node.is_null()) return;
+    if (!node.is_number()) {
+      throw InputError(path.string() + ": key '" + where + "' is " + node.dump() +
+                       ", expected a number");
+    }
+    // Counts, times, sizes and errors alike: none of them is negative.
+    if (node.get<double>() < 0.0) {
+      throw InputError(path.string() + ": key '" + where + "' is " + node.dump() +
+                       ", expected a number >= 0");
+    }
+    return;
   }
   if (node.is_null()) return;
   // frontier-bench writes "reference": false when it ran no reference.
@@ -97,7 +106,8 @@ nlohmann::json ReadSummary(const std::filesystem::path& path) {
   nlohmann::json summary;
   try {
     summary = nlohmann::json::parse(in);
-  } catch (const nlohmann::json::parse_error& e) {
+  } catch (const nlohmann::json::exception& e) {
+    // parse_error, and out_of_range for numbers such as 1e999.
     throw InputError(path.string() + ": not valid JSON (" + e.what() + ")");
   }
   if (!summary.is_object()) throw InputError(path.string() + ": expected a JSON object");
@@ -138,6 +148,10 @@ std::vector<FrontierRound> ReadFrontierCsv(const std::filesystem::path& path) {
     r.queried_points = Count(table, row, "queried_points");
     r.queried_submaps = Count(table, row, "queried_submaps");
     r.time_us = table.Number(row, "time_us");
+    if (!(r.time_us >= 0.0)) {
+      throw InputError(table.Where(row) + ": column 'time_us' is '" + table.Text(row, "time_us") +
+                       "', expected a time >= 0");
+    }
     r.tp = Count(table, row, "tp");
     r.fp = Count(table, row, "fp");
     r.tn = Count(table, row, "tn");

@@ -1,5 +1,6 @@
 #include "scout/slam/pose_extrapolator.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace scout::slam {
@@ -10,6 +11,12 @@ namespace {
 constexpr double kMaxOdometryExtensionS = 0.5;
 // About 20 s of 50 Hz odometry.
 constexpr size_t kMaxOdometryBeforeFirstPose = 1000;
+// The constant-velocity model is extended at most this long past the last
+// matched pose (or twice the interval between the two poses, if longer, so
+// sparse logs without odometry keep their prediction); then the predicted
+// pose stops moving. A scan stamped far after the rest (a corrupt time of
+// 1e6 s) would otherwise be predicted thousands of kilometres away.
+constexpr double kMaxConstantVelocityExtensionS = 2.0;
 
 bool IsFinite(const geometry::Rigid2d& pose) {
   return pose.translation().allFinite() && std::isfinite(pose.theta());
@@ -84,7 +91,10 @@ geometry::Rigid2d PoseExtrapolator::ExtrapolatePose(double time_s) const {
   if (poses_.size() < 2 || !(last.time_s > poses_.front().time_s)) return last.pose;
   // Constant velocity in the robot frame, from the last two matched poses.
   const TimedPose& before = poses_.front();
-  const double f = (time_s - before.time_s) / (last.time_s - before.time_s);
+  const double interval_s = last.time_s - before.time_s;
+  const double extension_s =
+      std::min(time_s - last.time_s, std::max(kMaxConstantVelocityExtensionS, 2.0 * interval_s));
+  const double f = (last.time_s + extension_s - before.time_s) / interval_s;
   const geometry::Rigid2d step = before.pose.inverse() * last.pose;
   return before.pose * InterpolatePose(geometry::Rigid2d(), step, f);
 }

@@ -14,7 +14,8 @@ namespace scout::slam {
 // scan-matched pose, the prediction is that pose composed with the odometry
 // delta between the two times (odometry interpolated at both times; up to
 // 0.5 s beyond the newest reading, the odometry's last velocity is extended).
-// Otherwise, a constant-velocity model from the last two matched poses.
+// Otherwise, a constant-velocity model from the last two matched poses,
+// extended at most max(2 s, twice their interval) past the newer one.
 // Motion between samples is interpolated linearly in (x, y, theta) of the
 // robot frame, which is exact for straight lines and close for short arcs.
 class PoseExtrapolator {

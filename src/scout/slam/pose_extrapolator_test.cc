@@ -39,6 +39,19 @@ TEST(PoseExtrapolatorTest, ConstantVelocityWithoutOdometry) {
   EXPECT_EQ(*extrapolator.last_pose_time(), 0.2);
 }
 
+TEST(PoseExtrapolatorTest, ConstantVelocityStopsAfterTwoSecondsOrTwoIntervals) {
+  PoseExtrapolator extrapolator;
+  extrapolator.AddPose(0.0, Rigid2d(0.0, 0.0, 0.0));
+  extrapolator.AddPose(0.1, Rigid2d(0.1, 0.0, 0.0));  // 1 m/s along +x
+  ExpectPoseNear(extrapolator.ExtrapolatePose(2.0), Rigid2d(2.0, 0.0, 0.0), 1e-9);
+  // A scan stamped a million seconds later is predicted where 2 s take the robot.
+  ExpectPoseNear(extrapolator.ExtrapolatePose(1e6), Rigid2d(2.1, 0.0, 0.0), 1e-9);
+  // Sparse poses (5 s apart) are extended by twice their interval.
+  extrapolator.AddPose(5.1, Rigid2d(5.1, 0.0, 0.0));
+  ExpectPoseNear(extrapolator.ExtrapolatePose(12.1), Rigid2d(12.1, 0.0, 0.0), 1e-9);
+  ExpectPoseNear(extrapolator.ExtrapolatePose(100.0), Rigid2d(15.1, 0.0, 0.0), 1e-9);
+}
+
 TEST(PoseExtrapolatorTest, OdometryDeltaAppliedToLastMatchedPose) {
   PoseExtrapolator extrapolator;
   // Odometry frame rotated and shifted against the local frame: only deltas matter.
