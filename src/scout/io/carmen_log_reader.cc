@@ -376,11 +376,20 @@ Dataset ReadCarmenLog(const fs::path& path, CarmenLogCounts* counts) {
                        ") before any usable scan; expected a complete gzip stream");
     }
     // First: of all the warnings, losing the rest of the log matters most.
-    dataset.warnings.insert(dataset.warnings.begin(),
-                            source + ": gzip data ends early after line " +
-                                std::to_string(reader.line_number()) + " (" + reader.error() +
-                                "); keeping the " + std::to_string(dataset.scans.size()) +
-                                " scans read up to there");
+    const bool cut = reader.error() == "unexpected end of file";
+    dataset.warnings.insert(
+        dataset.warnings.begin(),
+        source + ": gzip data ends early after line " + std::to_string(reader.line_number()) +
+            " (" + reader.error() + "); keeping the " + std::to_string(dataset.scans.size()) +
+            " scans read up to there" +
+            (cut ? std::string()
+                 : " (corrupt data decodes to garbage for a while before zlib notices: "
+                   "malformed lines just before it are likely part of the damage)"));
+  }
+  if (!reader.notice().empty()) {
+    dataset.warnings.insert(dataset.warnings.begin(), source + ": " + reader.notice() + " (" +
+                                                          std::to_string(reader.line_number()) +
+                                                          " lines read)");
   }
   parser.Finish();
   const std::size_t read_scans = dataset.scans.size() + counts->backwards_scans;

@@ -6,6 +6,8 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <numbers>
 #include <sstream>
 #include <string>
@@ -350,6 +352,44 @@ TEST(CarmenLogReader, TruncatedGzipKeepsTheCompleteLinesWithAWarning) {
   EXPECT_EQ(dataset.warnings.front().find(cut.string() + ": gzip data ends early"), 0u)
       << dataset.warnings.front();
   EXPECT_TRUE(AnyWarningContains(dataset, "5 more malformed"));
+}
+
+TEST(CarmenLogReader, GzipChecksumMismatchTrailingBytesAndSeveralMembersLoseNoLine) {
+  const TestTempDirectory dir;
+  std::string log;
+  for (int i = 0; i < 2000; ++i) log += Flaser(6, 1.0 + (i * 7919 % 1000) * 0.001, i, 0, 0, i);
+  const fs::path whole = dir.path() / "whole.log.gz";
+  WriteGzip(whole, log);
+  std::string bytes;
+  {
+    std::ifstream in(whole, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  // The CRC-32 is the trailer's first four bytes: every line is still there.
+  std::string bad_crc = bytes;
+  bad_crc[bad_crc.size() - 8] ^= 0x55;
+  const fs::path crc = dir.Write("crc.log.gz", bad_crc);
+  const Dataset checked = ReadCarmenLog(crc);
+  EXPECT_EQ(checked.scans.size(), 2000u);
+  ASSERT_FALSE(checked.warnings.empty());
+  EXPECT_EQ(checked.warnings.front().find(crc.string() + ": gzip incorrect data check"), 0u)
+      << checked.warnings.front();
+  // Bytes after the stream are named; a second gzip member is read.
+  const fs::path trailing = dir.Write("trailing.log.gz", bytes + "junk after the stream");
+  const Dataset trailed = ReadCarmenLog(trailing);
+  EXPECT_EQ(trailed.scans.size(), 2000u);
+  EXPECT_TRUE(AnyWarningContains(trailed, "21 bytes after the end of the gzip stream ignored"));
+  const fs::path later = dir.path() / "later.log.gz";
+  WriteGzip(later, Flaser(6, 1.0, 0, 0, 0, 5000.0));
+  std::string second;
+  {
+    std::ifstream in(later, std::ios::binary);
+    second.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  const Dataset both = ReadCarmenLog(dir.Write("members.log.gz", bytes + second));
+  ASSERT_EQ(both.scans.size(), 2001u);
+  EXPECT_DOUBLE_EQ(both.scans.back().time_s, 5000.0);
+  EXPECT_TRUE(both.warnings.empty()) << both.warnings.front();
 }
 
 TEST(CarmenLogReader, GzipCutInItsHeaderIsAnErrorNamingTheFile) {

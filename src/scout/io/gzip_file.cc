@@ -114,31 +114,140 @@ TemporaryFile::~TemporaryFile() {
   fs::remove(path_, ignored);
 }
 
-LineReader::LineReader(const fs::path& path) : file_(OpenGz(path).release()) {}
+namespace {
 
-LineReader::~LineReader() { gzclose(static_cast<gzFile>(file_)); }
+constexpr std::size_t kChunkBytes = 256 * 1024;
+
+z_stream* Stream(void* stream) { return static_cast<z_stream*>(stream); }
+
+}  // namespace
+
+LineReader::LineReader(const fs::path& path) {
+  RequireRegularFile(path, "a dataset or trajectory file");
+  gzip_ = IsGzipFile(path);
+  file_ = std::fopen(path.c_str(), "rb");
+  if (file_ == nullptr) {
+    throw InputError(path.string() + ": cannot open for reading (" + std::strerror(errno) + ")");
+  }
+  if (gzip_) {
+    auto* stream = new z_stream{};
+    // 16 + MAX_WBITS: a gzip wrapper, whose checksum inflate verifies.
+    if (inflateInit2(stream, 16 + MAX_WBITS) != Z_OK) {
+      delete stream;
+      std::fclose(file_);
+      throw InputError(path.string() + ": cannot start gzip decompression");
+    }
+    stream_ = stream;
+  }
+}
+
+LineReader::~LineReader() {
+  if (stream_ != nullptr) {
+    inflateEnd(Stream(stream_));
+    delete Stream(stream_);
+  }
+  if (file_ != nullptr) std::fclose(file_);
+}
 
 bool LineReader::Next(std::string& line) {
-  gzFile file = static_cast<gzFile>(file_);
-  line.clear();
-  char chunk[64 * 1024];
   for (;;) {
-    if (gzgets(file, chunk, sizeof(chunk)) == nullptr) {
-      error_ = GzErrorText(file);
-      if (!error_.empty()) {
-        line.clear();  // possibly cut mid-number: not trustworthy
-        return false;
-      }
-      if (line.empty()) return false;
-      break;  // last line without a newline
+    const std::size_t newline = pending_.find('\n', position_);
+    if (newline != std::string::npos) {
+      line.assign(pending_, position_, newline - position_);
+      position_ = newline + 1;
+      break;
     }
-    const std::size_t length = std::strlen(chunk);
-    line.append(chunk, length);
-    if (length > 0 && chunk[length - 1] == '\n') break;
+    // Keep only the unfinished line before decoding more.
+    pending_.erase(0, position_);
+    position_ = 0;
+    if (Fill()) continue;
+    // The end: a last line without a newline counts, one cut by an error not.
+    if (pending_.empty() || !error_.empty()) {
+      pending_.clear();
+      return false;
+    }
+    line.swap(pending_);
+    pending_.clear();
+    break;
   }
   while (!line.empty() && (line.back() == '\n' || line.back() == '\r')) line.pop_back();
   ++line_number_;
   return true;
+}
+
+bool LineReader::Fill() {
+  if (finished_) return false;
+  if (gzip_) return FillGzip();
+  const std::size_t before = pending_.size();
+  pending_.resize(before + kChunkBytes);
+  const std::size_t n = std::fread(pending_.data() + before, 1, kChunkBytes, file_);
+  pending_.resize(before + n);
+  if (n == 0) {
+    finished_ = true;
+    if (std::ferror(file_)) error_ = std::strerror(errno);
+  }
+  return n > 0;
+}
+
+bool LineReader::FillGzip() {
+  z_stream* stream = Stream(stream_);
+  const std::size_t before = pending_.size();
+  while (pending_.size() == before && !finished_) {
+    if (stream->avail_in == 0) {
+      input_.resize(kChunkBytes);
+      const std::size_t n = std::fread(input_.data(), 1, kChunkBytes, file_);
+      if (n == 0) {
+        finished_ = true;
+        error_ = std::ferror(file_) ? std::strerror(errno) : "unexpected end of file";
+        break;
+      }
+      stream->next_in = reinterpret_cast<Bytef*>(input_.data());
+      stream->avail_in = static_cast<uInt>(n);
+    }
+    pending_.resize(before + kChunkBytes);
+    stream->next_out = reinterpret_cast<Bytef*>(pending_.data() + before);
+    stream->avail_out = static_cast<uInt>(kChunkBytes);
+    const int result = inflate(stream, Z_NO_FLUSH);
+    // Whatever was decoded counts, also when inflate then reports an error.
+    pending_.resize(before + kChunkBytes - stream->avail_out);
+    if (result == Z_STREAM_END) {
+      // Another member may follow (concatenated gzip files); anything else
+      // after the stream is reported, not read.
+      if (stream->avail_in == 0) {
+        input_.resize(kChunkBytes);
+        stream->avail_in = static_cast<uInt>(std::fread(input_.data(), 1, kChunkBytes, file_));
+        stream->next_in = reinterpret_cast<Bytef*>(input_.data());
+      }
+      if (stream->avail_in == 0) {
+        finished_ = true;
+      } else if (stream->avail_in >= 2 && stream->next_in[0] == 0x1f &&
+                 stream->next_in[1] == 0x8b) {
+        inflateReset(stream);
+      } else {
+        std::size_t trailing = stream->avail_in;
+        char buffer[4096];
+        while (const std::size_t n = std::fread(buffer, 1, sizeof(buffer), file_)) trailing += n;
+        notice_ = std::to_string(trailing) + " bytes after the end of the gzip stream ignored";
+        finished_ = true;
+      }
+    } else if (result == Z_DATA_ERROR) {
+      const std::string message = stream->msg != nullptr ? stream->msg : "corrupt data";
+      finished_ = true;
+      // The trailer's checks come after all of the data: nothing is missing,
+      // but something in it may be wrong.
+      if (message == "incorrect data check" || message == "incorrect length check") {
+        notice_ = "gzip " + message +
+                  " at the end of the stream: every line was read, but "
+                  "some may be damaged";
+      } else {
+        error_ = message;
+      }
+    } else if (result != Z_OK && result != Z_BUF_ERROR) {
+      finished_ = true;
+      error_ = stream->msg != nullptr ? stream->msg : "zlib error " + std::to_string(result);
+    }
+  }
+  return pending_.size() > before;
 }
 
 }  // namespace scout::io

@@ -6,6 +6,7 @@
 // C++17-compatible.
 
 #include <cstddef>
+#include <cstdio>
 #include <filesystem>
 #include <string>
 
@@ -42,8 +43,11 @@ class TemporaryFile {
   std::filesystem::path path_;
 };
 
-// Reads a text file line by line, transparently decompressing gzip. Lines of
-// any length are returned whole, without the trailing newline (and '\r').
+// Reads a text file line by line, transparently decompressing gzip (several
+// concatenated members too). Lines of any length are returned whole, without
+// the trailing newline (and '\r'). Every byte zlib decoded before a problem is
+// delivered: a stream corrupt near its end, or with a wrong checksum, loses
+// nothing that was readable.
 class LineReader {
  public:
   // Throws InputError naming the file if it cannot be opened.
@@ -53,21 +57,36 @@ class LineReader {
   LineReader& operator=(const LineReader&) = delete;
 
   // Reads the next line into 'line'. Returns false at the end of the content
-  // or on a read error; then error() tells which.
+  // or when the content stops early; then error() tells which.
   bool Next(std::string& line);
 
   // 1-based number of the line last returned by Next().
   std::size_t line_number() const { return line_number_; }
 
-  // Empty after a clean end of file; otherwise zlib's description of why
-  // reading stopped (e.g. "unexpected end of file" for a truncated gzip).
-  // A line cut by the error is not returned.
+  // Empty after a complete stream; otherwise why the content stopped early
+  // (e.g. "unexpected end of file" for a truncated gzip, zlib's message for
+  // corrupt data). A line cut by the error is not returned.
   const std::string& error() const { return error_; }
 
+  // After the end: empty, or what is odd about a stream that was read whole
+  // (a checksum that does not match its data, bytes after the gzip stream).
+  const std::string& notice() const { return notice_; }
+
  private:
-  void* file_ = nullptr;  // gzFile, kept opaque so zlib.h stays out of headers
+  // Appends more decoded bytes to 'pending_'; false when there are none.
+  bool Fill();
+  bool FillGzip();
+
+  std::FILE* file_ = nullptr;
+  void* stream_ = nullptr;  // z_stream, kept opaque so zlib.h stays out of headers
+  bool gzip_ = false;
+  bool finished_ = false;
+  std::string input_;    // compressed bytes read from the file
+  std::string pending_;  // decoded bytes not yet returned
+  std::size_t position_ = 0;
   std::size_t line_number_ = 0;
   std::string error_;
+  std::string notice_;
 };
 
 }  // namespace scout::io
