@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "scout/common/error.h"
+#include "scout/common/format.h"
 #include "scout/frontier/update_strategy.h"
 
 namespace scout::exploration {
@@ -14,7 +15,7 @@ namespace {
 void RequirePositive(double value, const std::string& key) {
   if (!(value > 0.0) || !std::isfinite(value)) {
     throw InputError("explore." + key + ": expected a positive finite value, got " +
-                     std::to_string(value));
+                     FormatNumber(value));
   }
 }
 
@@ -125,10 +126,10 @@ void CheckExplorationOptions(const ExplorationOptions& options) {
   }
   if (e.frontier_inflation_radius_m + 1e-9 < planner_clearance) {
     throw InputError("contradictory options: explore.frontier_inflation_radius_m (" +
-                     std::to_string(e.frontier_inflation_radius_m) +
+                     FormatNumber(e.frontier_inflation_radius_m) +
                      ") is smaller than robot.radius_m + the smaller of explore.traversability."
                      "narrow_margin_m and safety_margin_m (" +
-                     std::to_string(planner_clearance) + ")");
+                     FormatNumber(planner_clearance) + ")");
   }
   if (e.follower.max_linear_speed_mps > options.robot.robot.max_linear_speed_mps + 1e-9 ||
       e.follower.max_angular_speed_radps > options.robot.robot.max_angular_speed_radps + 1e-9) {

@@ -5,6 +5,8 @@
 #include <string>
 #include <utility>
 
+#include "scout/common/format.h"
+
 namespace scout::explore {
 
 ScanMemory::ScanMemory(double memory_s, double radius_m)
@@ -12,7 +14,7 @@ ScanMemory::ScanMemory(double memory_s, double radius_m)
   if (!(std::isfinite(memory_s) && memory_s >= 0.0) ||
       !(std::isfinite(radius_m) && radius_m >= 0.0)) {
     throw std::invalid_argument("ScanMemory: memory_s and radius_m must be finite and >= 0, got " +
-                                std::to_string(memory_s) + " and " + std::to_string(radius_m));
+                                FormatNumber(memory_s) + " and " + FormatNumber(radius_m));
   }
 }
 

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "scout/common/error.h"
+#include "scout/common/format.h"
 
 namespace scout::frontier {
 namespace {
@@ -20,7 +21,7 @@ void RequirePositive(const char* key, double value) {
 void Validate(const FrontierOptions& options) {
   if (!(std::isfinite(options.inflation_radius_m) && options.inflation_radius_m >= 0.0)) {
     throw InputError("frontier option 'inflation_radius_m': expected >= 0 metres, got " +
-                     std::to_string(options.inflation_radius_m));
+                     FormatNumber(options.inflation_radius_m));
   }
   RequirePositive("epsilon_m", options.epsilon_m);
   RequirePositive("lidar_range_m", options.lidar_range_m);

@@ -12,6 +12,7 @@
 
 #include "scout/common/atomic_file.h"
 #include "scout/common/error.h"
+#include "scout/common/input_file.h"
 
 namespace scout::grid {
 namespace {
@@ -31,9 +32,8 @@ constexpr uint64_t kMaxPixelBytes = uint64_t{1} << 30;
 }
 
 std::string ReadFileBytes(const fs::path& path) {
-  std::error_code ec;
-  if (!fs::exists(path, ec)) Fail(path, "cannot open: file not found");
-  if (fs::is_directory(path, ec)) Fail(path, "cannot open: expected a file, found a directory");
+  // A pipe would block and /dev/zero never end.
+  RequireRegularFile(path, "a PGM or PNG image");
   std::unique_ptr<FILE, int (*)(FILE*)> file(std::fopen(path.c_str(), "rb"), &std::fclose);
   if (!file) Fail(path, std::string("cannot open: ") + std::strerror(errno));
   std::string data;
@@ -144,6 +144,12 @@ Image DecodePgm(const std::string& data, const fs::path& path) {
   for (uint64_t i = 0; i < num_pixels; ++i) {
     uint64_t v = 0;
     if (!scanner.Next(&v)) {
+      if (scanner.pos() < data.size()) {  // stopped at a character, not at the end
+        Fail(path,
+             "PGM sample " + std::to_string(i + 1) + ": expected a decimal number, found '" +
+                 data.substr(scanner.pos(), std::min<size_t>(8, data.size() - scanner.pos())) +
+                 "'");
+      }
       Fail(path, "truncated PGM: expected " + std::to_string(num_pixels) + " ASCII samples, got " +
                      std::to_string(i));
     }

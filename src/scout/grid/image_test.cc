@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <png.h>
 #include <rapidcheck/gtest.h>
+#include <sys/stat.h>
 
 #include <fstream>
 #include <string>
@@ -109,7 +110,12 @@ TEST(Image, ErrorsNameTheFileAndWhatWasExpected) {
       EXPECT_NE(std::string(e.what()).find(b), std::string::npos) << e.what();
     }
   };
-  expect_error([&] { ReadImage(dir.path() / "none.png"); }, "none.png", "not found");
+  expect_error([&] { ReadImage(dir.path() / "none.png"); }, "none.png", "no such file");
+  expect_error([&] { ReadImage(dir.Write("bad.pgm", "P2 2 1 255 25x 3")); }, "bad.pgm",
+               "PGM sample 2: expected a decimal number, found 'x 3'");
+  // A pipe would block for ever, /dev/zero never end.
+  ASSERT_EQ(::mkfifo((dir.path() / "fifo.pgm").c_str(), 0600), 0);
+  expect_error([&] { ReadImage(dir.path() / "fifo.pgm"); }, "fifo.pgm", "not a regular file");
   expect_error([&] { ReadImage(dir.Write("x.pgm", "P6\n1 1\n255\nabc")); }, "x.pgm", "PGM");
   expect_error([&] { ReadImage(dir.Write("big.pgm", "P2 1 1 255 300")); }, "big.pgm", "maxval");
   expect_error([&] { ReadImage(dir.Write("z.pgm", "P5 0 3 255 ")); }, "z.pgm", ">= 1");

@@ -2,15 +2,18 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "scout/common/atomic_file.h"
 #include "scout/common/error.h"
+#include "scout/common/input_file.h"
 #include "scout/common/input_limits.h"
 #include "scout/grid/image.h"
 
@@ -36,8 +39,7 @@ enum class Mode { kTrinary, kScale, kRaw };
 class MapYaml {
  public:
   explicit MapYaml(const fs::path& path) : path_(path) {
-    std::error_code ec;
-    if (!fs::exists(path, ec)) Fail("cannot open: file not found");
+    RequireRegularFile(path, "a map_server YAML file");
     std::ifstream in(path, std::ios::binary);
     if (!in) Fail("cannot open: permission denied or not a file");
     std::stringstream content;
@@ -56,6 +58,23 @@ class MapYaml {
     if (!documents.empty()) root_ = documents.front();
     if (!root_.IsMap()) {
       Fail("expected a YAML mapping with 'image', 'resolution' and 'origin'");
+    }
+    // yaml-cpp keeps the first of two equal keys and any misspelt one without
+    // a word: a map placed by the wrong origin would only show in the results.
+    std::vector<std::string> seen;
+    for (const auto& entry : root_) {
+      const std::string key = entry.first.Scalar();
+      if (std::find(seen.begin(), seen.end(), key) != seen.end()) {
+        Fail("field '" + key + "' given twice; expected each field once");
+      }
+      seen.push_back(key);
+      static const char* const kKeys[] = {"image", "resolution",      "origin",     "negate",
+                                          "mode",  "occupied_thresh", "free_thresh"};
+      if (std::find(std::begin(kKeys), std::end(kKeys), key) == std::end(kKeys)) {
+        Fail("unknown field '" + key +
+             "'; expected the map_server fields image, resolution, origin, negate, mode, "
+             "occupied_thresh and free_thresh");
+      }
     }
   }
 

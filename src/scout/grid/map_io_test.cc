@@ -180,6 +180,10 @@ TEST(MapIo, BadInputsNameTheFileAndField) {
   expect("image: ok.pgm\nresolution: [0.05\n", {"invalid YAML"});
   expect("- just\n- a list\n", {"mapping"});
   expect("image: ok.pgm\n" + good_rest + "---\nresolution: 0.1\n", {"holds 2 YAML documents"});
+  // yaml-cpp would keep the first origin, and drop a misspelt key, silently.
+  expect("image: ok.pgm\n" + good_rest + "origin: [1, 1, 0]\n", {"field 'origin' given twice"});
+  expect("image: ok.pgm\nresolutoin: 0.1\n" + good_rest, {"unknown field 'resolutoin'"});
+  ExpectInputError([&] { ReadMapServerMap(dir.path()); }, {"is a directory"});
 
   dir.Write("short.pgm", "P5\n4 4\n255\nabc");
   expect("image: short.pgm\n" + good_rest, {"'image'", "short.pgm", "truncated"});

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "scout/common/error.h"
+#include "scout/common/format.h"
 
 namespace scout::io {
 namespace {
@@ -12,39 +13,40 @@ constexpr double kRadPerDeg = std::numbers::pi / 180.0;
 
 void ReadGoals(YamlSection s, explore::GoalManagerOptions* o) {
   s.ReadPositive("progress_timeout_s", &o->progress_timeout_s);
-  s.ReadNonNegative("progress_min_m", &o->progress_min_m);
+  s.ReadNonNegativeAtMost("progress_min_m", &o->progress_min_m, 100.0);
   s.ReadNonNegative("replan_interval_s", &o->replan_interval_s);
   s.ReadInt("max_plan_attempts", &o->max_plan_attempts, 1);
   s.ReadNonNegative("finish_after_empty_s", &o->finish_after_empty_s);
   s.ReadNonNegative("finish_with_frontier_after_s", &o->finish_with_frontier_after_s);
   s.ReadNonNegative("stuck_timeout_s", &o->stuck_timeout_s);
   s.ReadNonNegative("stuck_min_motion_m", &o->stuck_min_motion_m);
-  s.ReadNonNegative("back_up_distance_m", &o->back_up_distance_m);
-  s.ReadNonNegative("back_up_speed_mps", &o->back_up_speed_mps);
+  s.ReadNonNegativeAtMost("back_up_distance_m", &o->back_up_distance_m, 10.0);
+  s.ReadNonNegativeAtMost("back_up_speed_mps", &o->back_up_speed_mps, 10.0);
   s.ReadNonNegative("back_up_timeout_s", &o->back_up_timeout_s);
-  s.ReadNonNegative("back_up_look_behind_m", &o->back_up_look_behind_m);
-  s.ReadNonNegative("back_up_trail_m", &o->back_up_trail_m);
-  s.ReadNonNegative("back_up_trail_tolerance_m", &o->back_up_trail_tolerance_m);
-  s.ReadNonNegative("close_stuck_passage_radius_m", &o->close_stuck_passage_radius_m);
-  s.ReadNonNegative("goal_frontier_radius_m", &o->goal_frontier_radius_m);
+  s.ReadNonNegativeAtMost("back_up_look_behind_m", &o->back_up_look_behind_m, 5.0);
+  s.ReadNonNegativeAtMost("back_up_trail_m", &o->back_up_trail_m, 100.0);
+  s.ReadNonNegativeAtMost("back_up_trail_tolerance_m", &o->back_up_trail_tolerance_m, 10.0);
+  s.ReadNonNegativeAtMost("close_stuck_passage_radius_m", &o->close_stuck_passage_radius_m, 10.0);
+  s.ReadNonNegativeAtMost("goal_frontier_radius_m", &o->goal_frontier_radius_m, 10.0);
   s.ReadNonNegative("goal_switch_margin", &o->goal_switch_margin);
-  s.ReadNonNegative("goal_match_radius_m", &o->goal_match_radius_m);
-  s.ReadNonNegative("max_stand_off_m", &o->max_stand_off_m);
+  s.ReadNonNegativeAtMost("goal_match_radius_m", &o->goal_match_radius_m, 20.0);
+  s.ReadNonNegativeAtMost("max_stand_off_m", &o->max_stand_off_m, 10.0);
   s.ReadBool("return_to_start", &o->return_to_start);
   {
     YamlSection g = s.Section("guard");
-    g.ReadNonNegative("clearance_m", &o->guard.clearance_m);
-    g.ReadNonNegative("horizon_s", &o->guard.horizon_s);
-    g.ReadNonNegative("steer_max_curvature_per_m", &o->guard.steer_max_curvature_per_m);
-    g.ReadNonNegative("steer_step_per_m", &o->guard.steer_step_per_m);
-    g.ReadNonNegative("memory_s", &o->guard.memory_s);
+    g.ReadNonNegativeAtMost("clearance_m", &o->guard.clearance_m, 1.0);
+    g.ReadNonNegativeAtMost("horizon_s", &o->guard.horizon_s, 10.0);
+    g.ReadNonNegativeAtMost("steer_max_curvature_per_m", &o->guard.steer_max_curvature_per_m,
+                            100.0);
+    g.ReadNonNegativeAtMost("steer_step_per_m", &o->guard.steer_step_per_m, 100.0);
+    g.ReadNonNegativeAtMost("memory_s", &o->guard.memory_s, 600.0);
     g.ReadBool("predict_motion", &o->guard.predict_motion);
     g.RejectUnknownKeys();
   }
   {
     YamlSection f = s.Section("failed_goals");
-    f.ReadNonNegative("blacklist_radius_m", &o->failed_goals.blacklist_radius_m);
-    f.ReadPositive("retry_radius_m", &o->failed_goals.retry_radius_m);
+    f.ReadNonNegativeAtMost("blacklist_radius_m", &o->failed_goals.blacklist_radius_m, 10.0);
+    f.ReadPositiveAtMost("retry_radius_m", &o->failed_goals.retry_radius_m, 10.0);
     f.ReadNonNegative("retry_known_area_change_m2", &o->failed_goals.retry_known_area_change_m2);
     f.ReadInt("max_failures", &o->failed_goals.max_failures, 0);
     f.RejectUnknownKeys();
@@ -53,7 +55,7 @@ void ReadGoals(YamlSection s, explore::GoalManagerOptions* o) {
 }
 
 void ReadFollower(YamlSection s, explore::PathFollowerOptions* o) {
-  s.ReadPositive("lookahead_m", &o->lookahead_m);
+  s.ReadPositiveAtMost("lookahead_m", &o->lookahead_m, 10.0);
   s.ReadPositive("max_linear_speed_mps", &o->max_linear_speed_mps);
   s.ReadPositive("max_angular_speed_radps", &o->max_angular_speed_radps);
   double heading_deg = o->rotate_in_place_heading_rad / kRadPerDeg;
@@ -61,8 +63,8 @@ void ReadFollower(YamlSection s, explore::PathFollowerOptions* o) {
                 YamlSection::Bound::kInclusive, YamlSection::Bound::kInclusive);
   o->rotate_in_place_heading_rad = heading_deg * kRadPerDeg;
   s.ReadPositive("rotate_gain_per_s", &o->rotate_gain_per_s);
-  s.ReadPositive("goal_tolerance_m", &o->goal_tolerance_m);
-  s.ReadNonNegative("slow_down_distance_m", &o->slow_down_distance_m);
+  s.ReadPositiveAtMost("goal_tolerance_m", &o->goal_tolerance_m, 5.0);
+  s.ReadNonNegativeAtMost("slow_down_distance_m", &o->slow_down_distance_m, 10.0);
   s.ReadNonNegative("min_linear_speed_mps", &o->min_linear_speed_mps);
   s.RejectUnknownKeys();
 }
@@ -71,15 +73,15 @@ void ReadPolicy(YamlSection s, explore::GoalPolicyOptions* o) {
   {
     YamlSection n = s.Section("navigation");
     explore::NavigationPointOptions& v = o->navigation;
-    n.ReadPositive("bandwidth_m", &v.mean_shift.bandwidth_m);
-    n.ReadNonNegative("seed_bin_m", &v.mean_shift.seed_bin_m);
-    n.ReadPositive("convergence_m", &v.mean_shift.convergence_m);
+    n.ReadPositiveAtMost("bandwidth_m", &v.mean_shift.bandwidth_m, 20.0);
+    n.ReadNonNegativeAtMost("seed_bin_m", &v.mean_shift.seed_bin_m, 10.0);
+    n.ReadPositiveAtMost("convergence_m", &v.mean_shift.convergence_m, 1.0);
     n.ReadInt("max_iterations", &v.mean_shift.max_iterations, 1);
-    n.ReadNonNegative("connectivity_margin_m", &v.connectivity_margin_m);
-    n.ReadPositive("info_radius_m", &v.info_radius_m);
+    n.ReadNonNegativeAtMost("connectivity_margin_m", &v.connectivity_margin_m, 20.0);
+    n.ReadPositiveAtMost("info_radius_m", &v.info_radius_m, 10.0);
     n.ReadBool("outside_map_is_unknown", &v.outside_map_is_unknown);
     n.ReadNonNegative("info_multiplier", &v.info_multiplier);
-    n.ReadNonNegative("hysteresis_radius_m", &v.hysteresis_radius_m);
+    n.ReadNonNegativeAtMost("hysteresis_radius_m", &v.hysteresis_radius_m, 20.0);
     n.ReadPositive("hysteresis_gain", &v.hysteresis_gain);
     n.RejectUnknownKeys();
   }
@@ -87,7 +89,7 @@ void ReadPolicy(YamlSection s, explore::GoalPolicyOptions* o) {
     YamlSection l = s.Section("explore_lite");
     l.ReadNonNegative("potential_scale", &o->explore_lite.potential_scale);
     l.ReadNonNegative("gain_scale", &o->explore_lite.gain_scale);
-    l.ReadNonNegative("min_frontier_size_m", &o->explore_lite.min_frontier_size_m);
+    l.ReadNonNegativeAtMost("min_frontier_size_m", &o->explore_lite.min_frontier_size_m, 100.0);
     l.RejectUnknownKeys();
   }
   s.RejectUnknownKeys();
@@ -107,7 +109,9 @@ void Check(const Options& options, const std::string& file, const std::string& s
 }  // namespace
 
 void ReadExploreOptions(YamlSection s, exploration::ExploreOptions* o) {
-  s.ReadPositive("dt_s", &o->dt_s);
+  // At least a millisecond: 1e-9 would take years of wall time per simulated second.
+  s.ReadInRange("dt_s", &o->dt_s, 0.001, 1.0, YamlSection::Bound::kInclusive,
+                YamlSection::Bound::kInclusive);
   s.ReadPositive("max_sim_time_s", &o->max_sim_time_s);
   s.ReadPositive("no_progress_timeout_s", &o->no_progress_timeout_s);
   s.ReadNonNegative("min_map_gain_m2", &o->min_map_gain_m2);
@@ -115,7 +119,7 @@ void ReadExploreOptions(YamlSection s, exploration::ExploreOptions* o) {
   s.ReadPositive("map_update_interval_s", &o->map_update_interval_s);
   s.ReadPositive("coverage_interval_s", &o->coverage_interval_s);
   double turn_deg = o->initial_turn_rad / kRadPerDeg;
-  s.ReadNonNegative("initial_turn_deg", &turn_deg);
+  s.ReadNonNegativeAtMost("initial_turn_deg", &turn_deg, 3600.0);
   o->initial_turn_rad = turn_deg * kRadPerDeg;
   s.ReadBool("evaluate_frontier", &o->evaluate_frontier);
   s.ReadBool("synchronous_slam", &o->synchronous_slam);
@@ -128,25 +132,25 @@ void ReadExploreOptions(YamlSection s, exploration::ExploreOptions* o) {
     l.ReadNonNegative("rotation_weight", &o->local_slam.rotation_weight);
     l.RejectUnknownKeys();
   }
-  s.ReadNonNegative("frontier_inflation_radius_m", &o->frontier_inflation_radius_m);
+  s.ReadNonNegativeAtMost("frontier_inflation_radius_m", &o->frontier_inflation_radius_m, 5.0);
   s.ReadPoints("boundary", &o->boundary);
   ReadGoals(s.Section("goals"), &o->goals);
   {
     YamlSection t = s.Section("traversability");
-    t.ReadNonNegative("safety_margin_m", &o->traversability.safety_margin_m);
+    t.ReadNonNegativeAtMost("safety_margin_m", &o->traversability.safety_margin_m, 5.0);
     t.ReadBool("unknown_traversable", &o->traversability.unknown_traversable);
-    t.ReadNonNegative("goal_snap_radius_m", &o->traversability.goal_snap_radius_m);
-    t.ReadNonNegative("narrow_margin_m", &o->traversability.narrow_margin_m);
-    t.ReadNonNegative("narrow_cost_factor", &o->traversability.narrow_cost_factor);
-    t.ReadNonNegative("escape_radius_m", &o->traversability.escape_radius_m);
-    t.ReadNonNegative("driven_width_m", &o->traversability.driven_width_m);
-    t.ReadNonNegative("driven_max_gap_m", &o->traversability.driven_max_gap_m);
+    t.ReadNonNegativeAtMost("goal_snap_radius_m", &o->traversability.goal_snap_radius_m, 5.0);
+    t.ReadNonNegativeAtMost("narrow_margin_m", &o->traversability.narrow_margin_m, 5.0);
+    t.ReadNonNegativeAtMost("narrow_cost_factor", &o->traversability.narrow_cost_factor, 1000.0);
+    t.ReadNonNegativeAtMost("escape_radius_m", &o->traversability.escape_radius_m, 10.0);
+    t.ReadNonNegativeAtMost("driven_width_m", &o->traversability.driven_width_m, 5.0);
+    t.ReadNonNegativeAtMost("driven_max_gap_m", &o->traversability.driven_max_gap_m, 100.0);
     t.RejectUnknownKeys();
   }
   {
     YamlSection p = s.Section("planner");
-    p.ReadNonNegative("clearance_weight", &o->planner.clearance_weight);
-    p.ReadPositive("clearance_band_m", &o->planner.clearance_band_m);
+    p.ReadNonNegativeAtMost("clearance_weight", &o->planner.clearance_weight, 1000.0);
+    p.ReadPositiveAtMost("clearance_band_m", &o->planner.clearance_band_m, 10.0);
     p.ReadBool("shortcut", &o->planner.shortcut);
     p.RejectUnknownKeys();
   }
@@ -207,8 +211,8 @@ void ValidateExploreAndRobot(const exploration::ExploreOptions& explore,
   // The simulator samples at most one scan per step: a longer step drops scans.
   if (explore.dt_s > 1.0 / robot.scan_rate_hz * (1.0 + 1e-9)) {
     throw InputError(file + ": 'explore.dt_s': expected at most one scan period (1 / " +
-                     "robot.scan_rate_hz = " + std::to_string(1.0 / robot.scan_rate_hz) +
-                     " s), got " + std::to_string(explore.dt_s));
+                     "robot.scan_rate_hz = " + FormatNumber(1.0 / robot.scan_rate_hz) +
+                     " s), got " + FormatNumber(explore.dt_s));
   }
   Check(explore.goals, file, "explore.goals");
   Check(explore.traversability, file, "explore.traversability");

@@ -141,10 +141,39 @@ TEST_F(ExploreConfigTest, ErrorsNameTheKey) {
             std::string::npos)
       << beams;
   // A step longer than the scan period drops scans (100 s steps drove nowhere).
-  const std::string step = ErrorOf("explore:\n  dt_s: 100\n");
+  const std::string step = ErrorOf("explore:\n  dt_s: 0.5\n");
   EXPECT_NE(step.find("'explore.dt_s': expected at most one scan period"), std::string::npos)
       << step;
   EXPECT_EQ(ErrorOf("explore:\n  dt_s: 0.1\n"), "");
+  // 1e-9 s steps never reached a second of simulated time.
+  const std::string tiny = ErrorOf("explore:\n  dt_s: 1e-9\n");
+  EXPECT_NE(tiny.find("'explore.dt_s': expected a number in [0.001, 1], got 1e-09"),
+            std::string::npos)
+      << tiny;
+}
+
+TEST_F(ExploreConfigTest, LengthsTheLoopWorksThroughHaveAnUpperBound) {
+  // Each of these at 1e300 was an internal error (a vector beyond max_size)
+  // or a step that never finished, which not even SIGTERM stopped.
+  const std::pair<const char*, const char*> cases[] = {
+      {"explore:\n  frontier_inflation_radius_m: 1e300\n",
+       "'explore.frontier_inflation_radius_m': expected a number in [0, 5], got 1e+300"},
+      {"explore:\n  traversability:\n    safety_margin_m: 1e300\n",
+       "'explore.traversability.safety_margin_m': expected a number in [0, 5]"},
+      {"explore:\n  traversability:\n    narrow_cost_factor: 1e300\n",
+       "'explore.traversability.narrow_cost_factor': expected a number in [0, 1000]"},
+      {"explore:\n  traversability:\n    goal_snap_radius_m: 100\n",
+       "'explore.traversability.goal_snap_radius_m': expected a number in [0, 5]"},
+      {"explore:\n  traversability:\n    driven_width_m: 1e5\n",
+       "'explore.traversability.driven_width_m'"},
+      {"explore:\n  goals:\n    guard:\n      horizon_s: 100\n",
+       "'explore.goals.guard.horizon_s': expected a number in [0, 10]"},
+      {"explore:\n  policy:\n    navigation:\n      info_radius_m: 1e5\n",
+       "'explore.policy.navigation.info_radius_m': expected a number in (0, 10]"}};
+  for (const auto& [yaml, expected] : cases) {
+    const std::string error = ErrorOf(yaml);
+    EXPECT_NE(error.find(expected), std::string::npos) << yaml << ": " << error;
+  }
 }
 
 }  // namespace

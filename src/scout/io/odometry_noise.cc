@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "scout/common/format.h"
+
 namespace scout::io {
 namespace {
 
@@ -37,7 +39,7 @@ class GaussianSampler {
 void CheckCoefficient(double value, const char* name) {
   if (!std::isfinite(value) || value < 0.0) {
     throw std::invalid_argument(std::string("odometry noise: ") + name +
-                                " must be finite and >= 0, got " + std::to_string(value));
+                                " must be finite and >= 0, got " + FormatNumber(value));
   }
 }
 

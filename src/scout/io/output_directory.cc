@@ -99,6 +99,18 @@ OutputDirectory::OutputDirectory(const std::filesystem::path& dir, Mode mode,
                          "choose another --out");
       }
     }
+    // Without Scout's list of what it wrote there, every file in the way is
+    // the user's: a run into such a directory (or into '/') would replace them.
+    if (std::filesystem::is_directory(dir_, ec) &&
+        !std::filesystem::exists(dir_ / kManifestName, ec)) {
+      for (const auto& entry : std::filesystem::directory_iterator(dir_, ec)) {
+        if (entry.path().filename().string().rfind(".scout-", 0) == 0) continue;
+        throw InputError("output directory '" + dir_.string() + "' already holds files that " +
+                         "Scout did not write (such as '" + entry.path().filename().string() +
+                         "'; it has no " + kManifestName +
+                         " list), which the run could replace; choose a new or empty --out");
+      }
+    }
     if (!command_.empty() && !earlier.command.empty() && earlier.command != command_) {
       throw InputError("output directory '" + dir_.string() + "' holds the outputs of `scout " +
                        earlier.command + "` (listed in its " + kManifestName + "), which `scout " +

@@ -218,6 +218,28 @@ TEST(OutputDirectory, RejectsADirectoryThatCannotBeCreated) {
   fs::remove_all(dir);
 }
 
+TEST(OutputDirectory, ADirectoryHoldingFilesScoutDidNotWriteIsRefused) {
+  const fs::path dir = FreshDir();
+  fs::create_directories(dir);
+  WriteTextFileAtomically(dir / "summary.json", "precious");
+  try {
+    OutputDirectory out(dir);
+    ADD_FAILURE() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("already holds files that Scout did not write (such as "
+                                         "'summary.json'"),
+              std::string::npos)
+        << e.what();
+  }
+  std::ifstream in(dir / "summary.json");
+  std::string text;
+  in >> text;
+  EXPECT_EQ(text, "precious");
+  // Adding files (a report) to a run directory without the list is allowed.
+  OutputDirectory added(dir, OutputDirectory::Mode::kAddFiles);
+  fs::remove_all(dir);
+}
+
 TEST(OutputDirectory, AnExistingFileIsNamedAsSuch) {
   const fs::path dir = FreshDir();
   fs::create_directories(dir);

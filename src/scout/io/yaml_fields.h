@@ -29,6 +29,15 @@ class YamlSection {
   // A finite number in [min, max], (min, max), [min, max) or (min, max].
   void ReadInRange(const std::string& key, double* value, double min, double max, Bound min_bound,
                    Bound max_bound);
+  // Shorthands: a number in [0, max], and one in (0, max]. Lengths and times
+  // that the loop works through cell by cell or step by step need an upper
+  // bound: 1e300 would exhaust memory or never finish a step.
+  void ReadNonNegativeAtMost(const std::string& key, double* value, double max) {
+    ReadInRange(key, value, 0.0, max, Bound::kInclusive, Bound::kInclusive);
+  }
+  void ReadPositiveAtMost(const std::string& key, double* value, double max) {
+    ReadInRange(key, value, 0.0, max, Bound::kExclusive, Bound::kInclusive);
+  }
   void ReadInt(const std::string& key, int* value, int min_value,
                int max_value = std::numeric_limits<int>::max());
   void ReadBool(const std::string& key, bool* value);

@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "scout/common/format.h"
+
 namespace scout::sensor {
 
 static_assert(kMaxRayLength_m == 200.0, "the messages below say 200");
@@ -15,7 +17,7 @@ void Validate(const RangeFilterOptions& options) {
   const auto check = [](bool ok, const char* key, double value, const char* expected) {
     if (!ok) {
       throw std::invalid_argument(std::string("range_filter.") + key + " must be " + expected +
-                                  ", got " + std::to_string(value));
+                                  ", got " + FormatNumber(value));
     }
   };
   check(options.min_range_m >= 0.0, "min_range_m", options.min_range_m, ">= 0");
@@ -31,7 +33,7 @@ namespace {
 void CheckNonNegative(const char* name, double value) {
   if (!(value >= 0.0)) {
     throw std::invalid_argument(std::string("range filter: ") + name + " must be >= 0, got " +
-                                std::to_string(value));
+                                FormatNumber(value));
   }
 }
 

@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "scout/common/format.h"
 #include "scout/geometry/box.h"
 #include "scout/sim/clearance.h"
 
@@ -24,7 +25,7 @@ double DistanceToCell(const grid::MapLimits& limits, const grid::CellIndex& cell
 DiscCollisionChecker::DiscCollisionChecker(const grid::OccupancyMap& map, double radius_m)
     : limits_(map.limits), radius_m_(radius_m), clearance_m_(ComputeClearance(map)) {
   if (!(radius_m > 0.0)) {
-    throw std::invalid_argument("DiscCollisionChecker: radius_m = " + std::to_string(radius_m) +
+    throw std::invalid_argument("DiscCollisionChecker: radius_m = " + FormatNumber(radius_m) +
                                 ", expected > 0");
   }
   half_diagonal_m_ = limits_.resolution() * std::sqrt(0.5);

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "scout/common/error.h"
+#include "scout/common/format.h"
 #include "scout/sim/random.h"
 #include "scout/sim/ray_caster.h"
 
@@ -15,7 +16,7 @@ namespace {
 
 void Require(bool ok, const std::string& key, double value, const std::string& expected) {
   if (!ok) {
-    throw InputError("lidar." + key + " = " + std::to_string(value) + ": expected " + expected);
+    throw InputError("lidar." + key + " = " + FormatNumber(value) + ": expected " + expected);
   }
 }
 

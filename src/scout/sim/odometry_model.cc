@@ -18,7 +18,7 @@ constexpr double kMaxNoiseCoefficient = 10.0;
 void Require(bool ok, const std::string& key, double value) {
   if (!ok) {
     std::ostringstream message;
-    message << "odometry." << key << " = " << value << ": expected a value in [0, "
+    message << "robot.odometry." << key << " = " << value << ": expected a value in [0, "
             << kMaxNoiseCoefficient << "]";
     throw InputError(message.str());
   }

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "scout/common/error.h"
+#include "scout/common/format.h"
 #include "scout/sim/box_util.h"
 #include "scout/sim/office_furniture.h"
 #include "scout/sim/office_world.h"
@@ -49,10 +50,10 @@ void Validate(const OfficeWorldOptions& o) {
   const double c = o.corridor_width_m;
   const double min_width = 6 * t + 2 * c + 2 * o.max_room_size_m + o.min_room_size_m;
   Require(o.width_m >= min_width, "width_m", o.width_m,
-          ">= " + std::to_string(min_width) + " for these room and corridor sizes");
+          ">= " + FormatNumber(min_width) + " for these room and corridor sizes");
   const double min_height = 7 * t + 2 * c + 2 * o.max_room_size_m + 2 * o.min_room_size_m;
   Require(o.height_m >= min_height, "height_m", o.height_m,
-          ">= " + std::to_string(min_height) + " for these room and corridor sizes");
+          ">= " + FormatNumber(min_height) + " for these room and corridor sizes");
 }
 
 // The clear intervals of the plan along one axis: rooms, corridor, inner block,

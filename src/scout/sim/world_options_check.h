@@ -4,6 +4,7 @@
 #include <string>
 
 #include "scout/common/error.h"
+#include "scout/common/format.h"
 
 namespace scout::sim {
 
@@ -11,7 +12,7 @@ namespace scout::sim {
 inline void RequireWorldOption(bool ok, const std::string& world, const std::string& key,
                                double value, const std::string& expected) {
   if (!ok) {
-    throw InputError(world + ": " + key + " = " + std::to_string(value) + ": expected " + expected);
+    throw InputError(world + ": " + key + " = " + FormatNumber(value) + ": expected " + expected);
   }
 }
 

@@ -6,6 +6,7 @@
 #include <string>
 #include <utility>
 
+#include "scout/common/format.h"
 #include "scout/grid/probability_values.h"
 
 namespace scout::slam {
@@ -14,8 +15,7 @@ namespace {
 void RequirePositive(const char* key, double value) {
   if (!(std::isfinite(value) && value > 0.0)) {
     throw std::invalid_argument(std::string("constraint_builder option '") + key +
-                                "': expected a positive finite number, got " +
-                                std::to_string(value));
+                                "': expected a positive finite number, got " + FormatNumber(value));
   }
 }
 
@@ -26,14 +26,14 @@ constexpr float kWallProbability = 0.6f;
 void RequireNonNegative(const char* key, double value) {
   if (!(std::isfinite(value) && value >= 0.0)) {
     throw std::invalid_argument(std::string("constraint_builder option '") + key +
-                                "': expected a finite value >= 0, got " + std::to_string(value));
+                                "': expected a finite value >= 0, got " + FormatNumber(value));
   }
 }
 
 void RequireFraction(const char* key, double value) {
   if (!(value >= 0.0 && value <= 1.0)) {
     throw std::invalid_argument(std::string("constraint_builder option '") + key +
-                                "': expected a value in [0, 1], got " + std::to_string(value));
+                                "': expected a value in [0, 1], got " + FormatNumber(value));
   }
 }
 
@@ -95,7 +95,7 @@ void Validate(const ConstraintBuilderOptions& options) {
   if (!(options.sampling_ratio > 0.0 && options.sampling_ratio <= 1.0)) {
     throw std::invalid_argument(
         "constraint_builder option 'sampling_ratio': expected a value in (0, 1], got " +
-        std::to_string(options.sampling_ratio));
+        FormatNumber(options.sampling_ratio));
   }
   RequirePositive("max_constraint_distance_m", options.max_constraint_distance_m);
   RequireFraction("min_score", options.min_score);

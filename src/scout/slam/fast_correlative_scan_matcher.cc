@@ -9,6 +9,7 @@
 #include <type_traits>
 #include <utility>
 
+#include "scout/common/format.h"
 #include "scout/grid/probability_values.h"
 
 namespace scout::slam {
@@ -97,7 +98,7 @@ void Validate(const FastCorrelativeScanMatcherOptions& options) {
         options.angular_search_window_rad <= std::numbers::pi)) {
     throw std::invalid_argument(
         "fast_correlative_scan_matcher.angular_search_window_rad must be in [0, pi], got " +
-        std::to_string(options.angular_search_window_rad));
+        FormatNumber(options.angular_search_window_rad));
   }
   if (options.branch_and_bound_depth < 1 || options.branch_and_bound_depth > 16) {
     throw std::invalid_argument(

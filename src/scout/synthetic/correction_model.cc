@@ -5,6 +5,7 @@
 #include <string>
 
 #include "scout/common/error.h"
+#include "scout/common/format.h"
 #include "scout/sim/random.h"
 #include "scout/synthetic/se2.h"
 
@@ -15,8 +16,7 @@ using geometry::Rigid2d;
 
 void Require(bool ok, const std::string& key, double value, const std::string& expected) {
   if (!ok) {
-    throw InputError("corrections." + key + " = " + std::to_string(value) + ": expected " +
-                     expected);
+    throw InputError("corrections." + key + " = " + FormatNumber(value) + ": expected " + expected);
   }
 }
 

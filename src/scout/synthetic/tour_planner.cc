@@ -5,6 +5,7 @@
 #include <string>
 
 #include "scout/common/error.h"
+#include "scout/common/format.h"
 #include "scout/sim/clearance.h"
 #include "scout/synthetic/grid_search.h"
 #include "scout/synthetic/path_smoothing.h"
@@ -17,7 +18,7 @@ constexpr double kUnbounded = std::numeric_limits<double>::infinity();
 
 void Require(bool ok, const std::string& key, double value, const std::string& expected) {
   if (!ok) {
-    throw InputError("tour." + key + " = " + std::to_string(value) + ": expected " + expected);
+    throw InputError("tour." + key + " = " + FormatNumber(value) + ": expected " + expected);
   }
 }
 
@@ -104,8 +105,8 @@ std::vector<Eigen::Vector2d> PlanTour(const sim::World& world, const TourOptions
   std::vector<Eigen::Vector2d> tour = {world.start};
   const int64_t source = NearestTraversable(map, search, limits.FlatIndex(start_cell));
   if (source < 0) {
-    throw InputError(where + ": no free space with clearance " +
-                     std::to_string(o.path_clearance_m) + " m is reachable from the start");
+    throw InputError(where + ": no free space with clearance " + FormatNumber(o.path_clearance_m) +
+                     " m is reachable from the start");
   }
   if (source != limits.FlatIndex(start_cell)) {
     tour.push_back(limits.CellCenter(limits.CellOfFlatIndex(source)));
