@@ -276,7 +276,9 @@ TEST_F(ScoutCli, WorldSizeIsValidated) {
   EXPECT_NE(r.output.find("50y50"), std::string::npos) << r.output;
   r = RunScout("explore --world office --world-size 10 --out " + (dir_ / "c").string());
   EXPECT_EQ(r.exit_code, 2) << r.output;
-  EXPECT_NE(r.output.find("width_m"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("--world-size 10: office world: width_m = 10: expected >= 19.9"),
+            std::string::npos)
+      << r.output;
   EXPECT_FALSE(fs::exists(dir_ / "a") || fs::exists(dir_ / "b") || fs::exists(dir_ / "c"));
 }
 

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "scout/common/error.h"
+#include "scout/sim/make_world.h"
 
 namespace scout::apps {
 
@@ -116,6 +117,18 @@ void PrintStrategyTable(const frontier::FrontierEngine& engine, std::ostream& ou
         << figure(t.confusion.precision(), scored) << std::setw(9)
         << figure(t.confusion.recall(), scored) << std::fixed << std::setprecision(1)
         << std::setw(11) << t.time_ms << "\n";
+  }
+}
+
+sim::World MakeCommandWorld(const std::string& world, uint64_t seed,
+                            const std::string& world_size) {
+  if (world_size.empty()) return sim::MakeWorld(world, seed, std::nullopt);
+  const sim::WorldSize size = sim::ParseWorldSize(world_size);
+  try {
+    return sim::MakeWorld(world, seed, size);
+  } catch (const InputError& e) {
+    // The generator names its own field (width_m); the user wrote --world-size.
+    throw InputError("--world-size " + world_size + ": " + e.what());
   }
 }
 

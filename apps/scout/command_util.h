@@ -10,6 +10,7 @@
 
 #include "scout/frontier/frontier_engine.h"
 #include "scout/io/config.h"
+#include "scout/sim/world.h"
 
 namespace scout::apps {
 
@@ -46,6 +47,10 @@ std::string FixedOrDash(double value, int decimals);
 // Prints one line per strategy: queried points, P, accuracy, precision,
 // recall and total update time.
 void PrintStrategyTable(const frontier::FrontierEngine& engine, std::ostream& out);
+
+// Makes the world of --world and --seed, sized by --world-size when given
+// ("W" or "WxH"); a size the generator cannot use is named as --world-size.
+sim::World MakeCommandWorld(const std::string& world, uint64_t seed, const std::string& world_size);
 
 }  // namespace scout::apps
 

@@ -16,6 +16,7 @@
 #include "apps/scout/report_command.h"
 #include "scout/common/atomic_file.h"
 #include "scout/common/error.h"
+#include "scout/common/format.h"
 #include "scout/common/input_limits.h"
 #include "scout/exploration/exploration_loop.h"
 #include "scout/frontier/stopwatch.h"
@@ -57,12 +58,20 @@ exploration::ExplorationOptions MakeOptions(const ExploreArgs& args) {
   if (args.max_sim_time_s) {
     if (!(*args.max_sim_time_s > 0.0) || !std::isfinite(*args.max_sim_time_s)) {
       throw InputError("--max-sim-time: expected a positive finite number of seconds, got " +
-                       std::to_string(*args.max_sim_time_s));
+                       FormatNumber(*args.max_sim_time_s));
     }
     o.explore.max_sim_time_s = *args.max_sim_time_s;
   }
   if (args.start) o.start = ParseStart(*args.start);
-  exploration::CheckExplorationOptions(o);
+  try {
+    exploration::CheckExplorationOptions(o);
+  } catch (const InputError& e) {
+    // Options that contradict each other come from the options file (over the
+    // defaults); a command-line option's message names its flag instead.
+    const std::string message = e.what();
+    if (args.config_file.empty() || message.rfind("--", 0) == 0) throw;
+    throw InputError(args.config_file + ": " + message);
+  }
   return o;
 }
 
@@ -291,10 +300,7 @@ int RunExplore(const ExploreArgs& args) {
   const frontier::Stopwatch wall;
   // Everything that can be wrong with the input is found before any output.
   const exploration::ExplorationOptions options = MakeOptions(args);
-  const std::optional<sim::WorldSize> world_size =
-      args.world_size.empty() ? std::nullopt
-                              : std::optional<sim::WorldSize>(sim::ParseWorldSize(args.world_size));
-  const sim::World world = sim::MakeWorld(args.world, args.seed, world_size);
+  const sim::World world = MakeCommandWorld(args.world, args.seed, args.world_size);
   exploration::ExplorationLoop loop(world, options, args.seed);
   std::optional<io::CarmenLogWriter> log;
   if (args.record_log) {

@@ -60,10 +60,7 @@ int RunFrontierBench(const FrontierBenchArgs& args) {
   // Validates options and names before any long work or any output.
   frontier::FrontierEngine engine(config.frontier, strategies, /*evaluate=*/!args.no_reference);
   const std::string picture_strategy = PictureStrategy(args.picture_strategy, strategies, engine);
-  const std::optional<sim::WorldSize> world_size =
-      args.world_size.empty() ? std::nullopt
-                              : std::optional<sim::WorldSize>(sim::ParseWorldSize(args.world_size));
-  const sim::World world = sim::MakeWorld(args.world, args.seed, world_size);
+  const sim::World world = MakeCommandWorld(args.world, args.seed, args.world_size);
   io::OutputDirectory out(args.out_dir, io::OutputDirectory::Mode::kReplaceRun, "frontier-bench",
                           {args.world, args.config_file});
 
@@ -96,7 +93,10 @@ int RunFrontierBench(const FrontierBenchArgs& args) {
   nlohmann::json summary;
   summary["world"] = args.world;
   summary["seed"] = args.seed;
-  if (world_size) summary["world_size_m"] = {world_size->width_m, world_size->height_m};
+  if (!args.world_size.empty()) {
+    const sim::WorldSize world_size = sim::ParseWorldSize(args.world_size);
+    summary["world_size_m"] = {world_size.width_m, world_size.height_m};
+  }
   summary["submaps"] = engine.catalog().size();
   summary["optimizations"] = engine.optimizations();
   summary["local_frontier_points"] = engine.catalog().total_points();

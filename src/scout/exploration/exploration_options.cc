@@ -133,9 +133,12 @@ void CheckExplorationOptions(const ExplorationOptions& options) {
   }
   if (e.follower.max_linear_speed_mps > options.robot.robot.max_linear_speed_mps + 1e-9 ||
       e.follower.max_angular_speed_radps > options.robot.robot.max_angular_speed_radps + 1e-9) {
-    throw InputError(
-        "contradictory options: explore.follower speeds exceed robot.max_linear_speed_mps / "
-        "robot.max_angular_speed_radps");
+    throw InputError("contradictory options: explore.follower speeds (" +
+                     FormatNumber(e.follower.max_linear_speed_mps) + " m/s, " +
+                     FormatNumber(e.follower.max_angular_speed_radps) +
+                     " rad/s) exceed robot.max_linear_speed_mps / robot.max_angular_speed_radps (" +
+                     FormatNumber(options.robot.robot.max_linear_speed_mps) + " m/s, " +
+                     FormatNumber(options.robot.robot.max_angular_speed_radps) + " rad/s)");
   }
   if (options.start && !options.start->allFinite()) {
     throw InputError("--start: expected finite coordinates");

@@ -25,7 +25,8 @@ void Require(bool ok, const std::string& key, double value, const std::string& e
 Lidar::Lidar(const LidarOptions& options) : options_(options) {
   Require(options.range_max_m > 0.0, "range_max_m", options.range_max_m, "> 0");
   Require(options.range_min_m >= 0.0 && options.range_min_m < options.range_max_m, "range_min_m",
-          options.range_min_m, ">= 0 and < range_max_m");
+          options.range_min_m,
+          ">= 0 and < range_max_m (" + FormatNumber(options.range_max_m) + ")");
   Require(options.fov_deg > 0.0 && options.fov_deg <= 360.0, "fov_deg", options.fov_deg,
           "in (0, 360]");
   Require(options.beams >= 1, "beams", options.beams, ">= 1");

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "scout/common/error.h"
+#include "scout/common/format.h"
 #include "scout/sim/box_util.h"
 #include "scout/sim/museum_world.h"
 #include "scout/sim/random.h"
@@ -25,10 +26,11 @@ void Validate(const MuseumWorldOptions& o) {
           "> 2 * wall_thickness_m");
   Require(o.max_hall_size_m >= o.min_hall_size_m, "max_hall_size_m", o.max_hall_size_m,
           ">= min_hall_size_m");
-  Require(o.width_m >= o.min_hall_size_m + 2.0 * o.wall_thickness_m, "width_m", o.width_m,
-          ">= min_hall_size_m + 2 * wall_thickness_m");
-  Require(o.height_m >= o.min_hall_size_m + 2.0 * o.wall_thickness_m, "height_m", o.height_m,
-          ">= min_hall_size_m + 2 * wall_thickness_m");
+  const double min_side_m = o.min_hall_size_m + 2.0 * o.wall_thickness_m;
+  const std::string at_least =
+      ">= " + FormatNumber(min_side_m) + " (min_hall_size_m + 2 * wall_thickness_m)";
+  Require(o.width_m >= min_side_m, "width_m", o.width_m, at_least);
+  Require(o.height_m >= min_side_m, "height_m", o.height_m, at_least);
   Require(o.corridor_width_m > 0.0, "corridor_width_m", o.corridor_width_m, "> 0");
   Require(o.corridor_probability >= 0.0 && o.corridor_probability <= 1.0, "corridor_probability",
           o.corridor_probability, "in [0, 1]");
