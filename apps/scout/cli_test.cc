@@ -280,6 +280,12 @@ TEST_F(ScoutCli, WorldSizeIsValidated) {
             std::string::npos)
       << r.output;
   EXPECT_FALSE(fs::exists(dir_ / "a") || fs::exists(dir_ / "b") || fs::exists(dir_ / "c"));
+  // CLI11 takes an empty value as not given: the default world, or 3600 s.
+  r = RunScout("explore --world-size '' --out " + (dir_ / "d").string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("--world-size: expected a value, got an empty string"), std::string::npos)
+      << r.output;
+  EXPECT_FALSE(fs::exists(dir_ / "d"));
 }
 
 }  // namespace

@@ -132,4 +132,14 @@ sim::World MakeCommandWorld(const std::string& world, uint64_t seed,
   }
 }
 
+void RejectEmptyValues(const CLI::App& command) {
+  for (const CLI::Option* option : command.get_options()) {
+    for (const std::string& value : option->results()) {
+      if (value.empty()) {
+        throw InputError(option->get_name() + ": expected a value, got an empty string");
+      }
+    }
+  }
+}
+
 }  // namespace scout::apps

@@ -52,6 +52,10 @@ void PrintStrategyTable(const frontier::FrontierEngine& engine, std::ostream& ou
 // ("W" or "WxH"); a size the generator cannot use is named as --world-size.
 sim::World MakeCommandWorld(const std::string& world, uint64_t seed, const std::string& world_size);
 
+// Throws InputError naming the first option of 'command' given an empty
+// value ("--max-sim-time ''"), which CLI11 would take as not given at all.
+void RejectEmptyValues(const CLI::App& command);
+
 }  // namespace scout::apps
 
 #endif  // SCOUT_APPS_SCOUT_COMMAND_UTIL_H_

@@ -75,7 +75,7 @@ TEST_F(ExploreCli, BadInputsNameWhatIsWrongAndLeaveNoOutputs) {
   EXPECT_NE(r.output.find("expected X,Y"), std::string::npos) << r.output;
   r = RunScout("explore --start ''" + rooms + o);  // given, but empty: not the default start
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.output.find("expected X,Y"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("--start: expected a value"), std::string::npos) << r.output;
   r = RunScout("explore --start 500,500" + rooms + o);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find("is outside the map, which spans"), std::string::npos) << r.output;

@@ -7,6 +7,7 @@
 #include <exception>
 #include <iostream>
 
+#include "apps/scout/command_util.h"
 #include "apps/scout/compare_command.h"
 #include "apps/scout/explore_command.h"
 #include "apps/scout/frontier_bench_command.h"
@@ -46,6 +47,9 @@ int main(int argc, char** argv) {
   }
   scout::apps::InstallInterruptHandler();
   try {
+    for (const CLI::App* command : app.get_subcommands()) {
+      scout::apps::RejectEmptyValues(*command);
+    }
     if (bench->parsed()) return scout::apps::RunFrontierBench(bench_args);
     if (report->parsed()) return scout::apps::RunReport(report_args);
     if (compare->parsed()) return scout::apps::RunCompare(compare_args);
