@@ -172,6 +172,13 @@ std::vector<CoverageSample> ReadCoverageCsv(const std::filesystem::path& path) {
       throw InputError(table.Where(row) + ": coverage '" + table.Text(row, "coverage") +
                        "' is outside 0..1");
     }
+    // The figures plot coverage against time and path: both only grow.
+    if (!samples.empty() && (s.sim_time_s < samples.back().sim_time_s ||
+                             s.path_length_m < samples.back().path_length_m)) {
+      throw InputError(table.Where(row) + ": sim_time_s '" + table.Text(row, "sim_time_s") +
+                       "' and path_length_m '" + table.Text(row, "path_length_m") +
+                       "': expected neither to fall below the row before's");
+    }
     samples.push_back(s);
   }
   return samples;

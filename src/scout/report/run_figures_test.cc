@@ -136,6 +136,12 @@ TEST(RunFigures, BadCsvNamesFileAndLine) {
   expect_error("coverage.csv", "sim_time_s,path_length_m,coverage\n1,2,0.5\n\n2,3,nan\n",
                ":4: column 'coverage'");
   expect_error("coverage.csv", "sim_time_s,path_length_m,coverage\n1,2,1.5\n", ":2: coverage");
+  expect_error("coverage.csv", "sim_time_s,path_length_m,coverage\n2,2,0.5\n1,3,0.6\n",
+               ":3: sim_time_s '1' and path_length_m '3': expected neither to fall below");
+  expect_error("frontier.csv", header + "0,dfd,5,1,-10,1,0,4,0,5\n",
+               ":2: column 'time_us' is '-10', expected a time >= 0");
+  expect_error("frontier.csv", header + "0,dfd,99999999999999999999999,1,10,1,0,4,0,5\n",
+               ":2: column 'queried_points'");
   std::filesystem::remove(dir / "coverage.csv");
   EXPECT_THROW(ReadRun(dir), InputError);  // holds nothing
   EXPECT_THROW(ReadRun(dir / "nonexistent"), InputError);
