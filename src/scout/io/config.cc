@@ -15,7 +15,8 @@ namespace scout::io {
 namespace {
 
 void ReadFrontier(YamlSection s, frontier::FrontierOptions* o) {
-  s.ReadNonNegative("inflation_radius_m", &o->inflation_radius_m);
+  // Wider than a few metres, the inflation is a memory exhaustion, not an option.
+  s.ReadNonNegativeAtMost("inflation_radius_m", &o->inflation_radius_m, 5.0);
   s.ReadPositive("epsilon_m", &o->epsilon_m);
   s.ReadPositive("lidar_range_m", &o->lidar_range_m);
   s.ReadPositive("exact_slack_m", &o->exact_slack_m);
@@ -26,9 +27,12 @@ void ReadFrontier(YamlSection s, frontier::FrontierOptions* o) {
 void ReadSynthetic(YamlSection s, synthetic::SyntheticStreamOptions* o) {
   s.ReadPositive("resolution_m", &o->resolution_m);
   s.ReadInt("scans_per_submap", &o->scans_per_submap, 1);
-  s.ReadPositive("scan_spacing_m", &o->scan_spacing_m);
+  // Spacings below these made tours of billions of scans (bad_alloc).
+  s.ReadInRange("scan_spacing_m", &o->scan_spacing_m, 0.01, 100.0, YamlSection::Bound::kInclusive,
+                YamlSection::Bound::kInclusive);
   double spacing_deg = o->scan_spacing_rad * 180.0 / std::numbers::pi;
-  s.ReadPositive("scan_spacing_deg", &spacing_deg);
+  s.ReadInRange("scan_spacing_deg", &spacing_deg, 0.1, 360.0, YamlSection::Bound::kInclusive,
+                YamlSection::Bound::kInclusive);
   o->scan_spacing_rad = spacing_deg * std::numbers::pi / 180.0;
   s.ReadPositive("linear_speed_mps", &o->linear_speed_mps);
   s.ReadPositive("angular_speed_radps", &o->angular_speed_radps);
@@ -37,41 +41,44 @@ void ReadSynthetic(YamlSection s, synthetic::SyntheticStreamOptions* o) {
   ReadLidarOptions(s.Section("lidar"), &o->lidar);
   {
     YamlSection r = s.Section("range_filter");
-    r.ReadNonNegative("min_range_m", &o->range_filter.min_range_m);
+    r.ReadNonNegativeAtMost("min_range_m", &o->range_filter.min_range_m, 200.0);
     r.ReadPositive("max_range_m", &o->range_filter.max_range_m);
     r.ReadNonNegative("miss_ray_length_m", &o->range_filter.miss_ray_length_m);
     r.RejectUnknownKeys();
   }
   {
     YamlSection in = s.Section("insertion");
-    in.ReadInRange("hit_probability", &o->insertion.hit_probability, 0.5, 1.0,
-                   YamlSection::Bound::kExclusive, YamlSection::Bound::kExclusive);
-    in.ReadInRange("miss_probability", &o->insertion.miss_probability, 0.0, 0.5,
-                   YamlSection::Bound::kExclusive, YamlSection::Bound::kExclusive);
+    ReadHitMissProbabilities(in, &o->insertion);
     in.RejectUnknownKeys();
   }
   {
     YamlSection t = s.Section("tour");
     t.ReadPositive("path_clearance_m", &o->tour.path_clearance_m);
     t.ReadPositive("waypoint_clearance_m", &o->tour.waypoint_clearance_m);
-    t.ReadPositive("waypoint_spacing_m", &o->tour.waypoint_spacing_m);
+    t.ReadInRange("waypoint_spacing_m", &o->tour.waypoint_spacing_m, 0.01, 1000.0,
+                  YamlSection::Bound::kInclusive, YamlSection::Bound::kInclusive);
     t.ReadBool("return_to_start", &o->tour.return_to_start);
     t.ReadPositive("max_shortcut_m", &o->tour.max_shortcut_m);
-    t.ReadPositive("smoothing_spacing_m", &o->tour.smoothing_spacing_m);
-    t.ReadInt("smoothing_iterations", &o->tour.smoothing_iterations, 0);
+    t.ReadInRange("smoothing_spacing_m", &o->tour.smoothing_spacing_m, 0.01, 1000.0,
+                  YamlSection::Bound::kInclusive, YamlSection::Bound::kInclusive);
+    t.ReadInt("smoothing_iterations", &o->tour.smoothing_iterations, 0, 1000);
     t.ReadNonNegative("min_pose_clearance_m", &o->tour.min_pose_clearance_m);
     t.RejectUnknownKeys();
   }
   {
     YamlSection c = s.Section("corrections");
     synthetic::CorrectionModelOptions& m = o->corrections;
-    c.ReadNonNegative("drift_translation_m_per_sqrt_m", &m.drift_translation_m_per_sqrt_m);
-    c.ReadNonNegative("drift_heading_rad_per_sqrt_m", &m.drift_heading_rad_per_sqrt_m);
-    c.ReadNonNegative("drift_heading_rad_per_sqrt_rad", &m.drift_heading_rad_per_sqrt_rad);
+    // A drift of more than a metre (radian) per square-root metre is no SLAM any more;
+    // 1e300 made the corrected poses infinite.
+    c.ReadNonNegativeAtMost("drift_translation_m_per_sqrt_m", &m.drift_translation_m_per_sqrt_m,
+                            1.0);
+    c.ReadNonNegativeAtMost("drift_heading_rad_per_sqrt_m", &m.drift_heading_rad_per_sqrt_m, 1.0);
+    c.ReadNonNegativeAtMost("drift_heading_rad_per_sqrt_rad", &m.drift_heading_rad_per_sqrt_rad,
+                            1.0);
     c.ReadNonNegative("newest_pull_fraction", &m.newest_pull_fraction);
     c.ReadNonNegative("pull_decay_per_submap", &m.pull_decay_per_submap);
-    c.ReadNonNegative("newest_jitter_m", &m.newest_jitter_m);
-    c.ReadNonNegative("newest_jitter_rad", &m.newest_jitter_rad);
+    c.ReadNonNegativeAtMost("newest_jitter_m", &m.newest_jitter_m, 10.0);
+    c.ReadNonNegativeAtMost("newest_jitter_rad", &m.newest_jitter_rad, 3.15);
     c.ReadNonNegative("min_nudge_m", &m.min_nudge_m);
     c.ReadNonNegative("min_nudge_rad", &m.min_nudge_rad);
     c.ReadPositive("loop_closure_distance_m", &m.loop_closure_distance_m);

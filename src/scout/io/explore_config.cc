@@ -160,13 +160,14 @@ void ReadExploreOptions(YamlSection s, exploration::ExploreOptions* o) {
 }
 
 void ReadLidarOptions(YamlSection l, sim::LidarOptions* o) {
-  l.ReadPositive("range_max_m", &o->range_max_m);
+  // No ray is longer than sensor::kMaxRayLength_m (200 m).
+  l.ReadPositiveAtMost("range_max_m", &o->range_max_m, 200.0);
   l.ReadNonNegative("range_min_m", &o->range_min_m);
   l.ReadInRange("fov_deg", &o->fov_deg, 0.0, 360.0, YamlSection::Bound::kExclusive,
                 YamlSection::Bound::kInclusive);
   // 0.01 degree apart over a full turn; more only exhausts memory.
   l.ReadInt("beams", &o->beams, 2, 36000);
-  l.ReadNonNegative("range_noise_stddev_m", &o->range_noise_stddev_m);
+  l.ReadNonNegativeAtMost("range_noise_stddev_m", &o->range_noise_stddev_m, 1.0);
   l.ReadInRange("dropout_probability", &o->dropout_probability, 0.0, 1.0,
                 YamlSection::Bound::kInclusive, YamlSection::Bound::kInclusive);
   l.RejectUnknownKeys();

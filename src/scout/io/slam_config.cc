@@ -28,13 +28,6 @@ void ReadGridProbability(YamlSection& s, const std::string& key, double* value) 
   s.ReadInRange(key, value, 0.1, 0.9, Bound::kInclusive, Bound::kInclusive);
 }
 
-void ReadHitMissProbabilities(YamlSection& s, grid::RangeDataInserterOptions* o) {
-  s.ReadInRange("hit_probability", &o->hit_probability, 0.5, 1.0, Bound::kExclusive,
-                Bound::kExclusive);
-  s.ReadInRange("miss_probability", &o->miss_probability, 0.0, 0.5, Bound::kExclusive,
-                Bound::kExclusive);
-}
-
 void ReadAdaptiveVoxelFilter(YamlSection s, slam::AdaptiveVoxelFilterOptions* o) {
   s.ReadPositive("max_length_m", &o->max_length_m);
   s.ReadInt("min_num_points", &o->min_num_points, 1);
@@ -166,6 +159,15 @@ void ReadSlamOptions(YamlSection section, slam::SlamOptions* options) {
   ReadPoseGraph(section.Section("pose_graph"), &options->pose_graph);
   section.ReadInt("submap_event_every_n_insertions", &options->submap_event_every_n_insertions, 1);
   section.RejectUnknownKeys();
+}
+
+void ReadHitMissProbabilities(YamlSection& s, grid::RangeDataInserterOptions* o) {
+  // Within 0.001 of certainty, the odds tables underflow (1e-300 was an
+  // internal error).
+  s.ReadInRange("hit_probability", &o->hit_probability, 0.5, 0.999, Bound::kExclusive,
+                Bound::kInclusive);
+  s.ReadInRange("miss_probability", &o->miss_probability, 0.001, 0.5, Bound::kInclusive,
+                Bound::kExclusive);
 }
 
 }  // namespace scout::io

@@ -10,6 +10,9 @@ namespace scout::io {
 // Angles are given in degrees in the file (keys ending in _deg).
 void ReadSlamOptions(YamlSection section, slam::SlamOptions* options);
 
+// Reads hit_probability and miss_probability of a grid inserter.
+void ReadHitMissProbabilities(YamlSection& section, grid::RangeDataInserterOptions* options);
+
 }  // namespace scout::io
 
 #endif  // SCOUT_IO_SLAM_CONFIG_H_

@@ -20,9 +20,10 @@ void Validate(const RangeFilterOptions& options) {
                                   ", got " + FormatNumber(value));
     }
   };
-  check(options.min_range_m >= 0.0, "min_range_m", options.min_range_m, ">= 0");
+  check(options.min_range_m >= 0.0 && options.min_range_m <= kMaxRayLength_m, "min_range_m",
+        options.min_range_m, "in [0, 200] (m)");
   check(options.max_range_m > options.min_range_m, "max_range_m", options.max_range_m,
-        "> range_filter.min_range_m");
+        ("> range_filter.min_range_m (" + FormatNumber(options.min_range_m) + ")").c_str());
   check(options.max_range_m <= kMaxRayLength_m || options.max_range_m == kInfinity, "max_range_m",
         options.max_range_m, "at most 200 (m) when given");
   check(options.miss_ray_length_m >= 0.0 && options.miss_ray_length_m <= kMaxRayLength_m,

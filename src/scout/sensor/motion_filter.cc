@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include "scout/common/format.h"
 
 namespace scout::sensor {
 namespace {
@@ -10,7 +11,7 @@ namespace {
 void CheckPositive(const char* name, double value) {
   if (!(value > 0.0) || std::isinf(value)) {
     throw std::invalid_argument(std::string("motion_filter.") + name +
-                                " must be finite and > 0, got " + std::to_string(value));
+                                " must be finite and > 0, got " + FormatNumber(value));
   }
 }
 

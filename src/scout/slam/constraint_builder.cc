@@ -14,7 +14,7 @@ namespace {
 
 void RequirePositive(const char* key, double value) {
   if (!(std::isfinite(value) && value > 0.0)) {
-    throw std::invalid_argument(std::string("constraint_builder option '") + key +
+    throw std::invalid_argument(std::string("'slam.pose_graph.constraint_builder.") + key +
                                 "': expected a positive finite number, got " + FormatNumber(value));
   }
 }
@@ -25,14 +25,14 @@ constexpr float kWallProbability = 0.6f;
 
 void RequireNonNegative(const char* key, double value) {
   if (!(std::isfinite(value) && value >= 0.0)) {
-    throw std::invalid_argument(std::string("constraint_builder option '") + key +
+    throw std::invalid_argument(std::string("'slam.pose_graph.constraint_builder.") + key +
                                 "': expected a finite value >= 0, got " + FormatNumber(value));
   }
 }
 
 void RequireFraction(const char* key, double value) {
   if (!(value >= 0.0 && value <= 1.0)) {
-    throw std::invalid_argument(std::string("constraint_builder option '") + key +
+    throw std::invalid_argument(std::string("'slam.pose_graph.constraint_builder.") + key +
                                 "': expected a value in [0, 1], got " + FormatNumber(value));
   }
 }
@@ -94,7 +94,7 @@ double SeeThroughFraction(const grid::ProbabilityGrid& grid, const geometry::Rig
 void Validate(const ConstraintBuilderOptions& options) {
   if (!(options.sampling_ratio > 0.0 && options.sampling_ratio <= 1.0)) {
     throw std::invalid_argument(
-        "constraint_builder option 'sampling_ratio': expected a value in (0, 1], got " +
+        "'slam.pose_graph.constraint_builder.sampling_ratio': expected a value in (0, 1], got " +
         FormatNumber(options.sampling_ratio));
   }
   RequirePositive("max_constraint_distance_m", options.max_constraint_distance_m);
@@ -109,8 +109,9 @@ void Validate(const ConstraintBuilderOptions& options) {
   RequireNonNegative("angular_search_window_deg_per_m", options.angular_search_window_deg_per_m);
   RequireNonNegative("max_sample_spacing_m", options.max_sample_spacing_m);
   if (options.min_num_points < 1) {
-    throw std::invalid_argument("constraint_builder option 'min_num_points': expected >= 1, got " +
-                                std::to_string(options.min_num_points));
+    throw std::invalid_argument(
+        "'slam.pose_graph.constraint_builder.min_num_points': expected >= 1, got " +
+        std::to_string(options.min_num_points));
   }
   RequireNonNegative("wide_ambiguity_min_innovation_m", options.wide_ambiguity_min_innovation_m);
   RequirePositive("wide_ambiguity_window_factor", options.wide_ambiguity_window_factor);

@@ -11,6 +11,7 @@
 #include <string>
 #include <tuple>
 
+#include "scout/common/format.h"
 #include "scout/slam/relative_pose_cost.h"
 
 namespace scout::slam {
@@ -20,9 +21,8 @@ using Pose = std::array<double, 3>;  // x, y, theta: one Ceres parameter block
 
 void RequirePositive(const char* key, double value) {
   if (!(std::isfinite(value) && value > 0.0)) {
-    throw std::invalid_argument(std::string("optimization_problem option '") + key +
-                                "': expected a positive finite number, got " +
-                                std::to_string(value));
+    throw std::invalid_argument(std::string("'slam.pose_graph.optimization_problem.") + key +
+                                "': expected a positive finite number, got " + FormatNumber(value));
   }
 }
 
@@ -50,12 +50,13 @@ void Validate(const OptimizationProblemOptions& options) {
   RequirePositive("odometry_rotation_weight", options.odometry_rotation_weight);
   if (options.max_num_iterations < 1) {
     throw std::invalid_argument(
-        "optimization_problem option 'max_num_iterations': expected >= 1, got " +
+        "'slam.pose_graph.optimization_problem.max_num_iterations': expected >= 1, got " +
         std::to_string(options.max_num_iterations));
   }
-  if (options.num_threads < 1) {
-    throw std::invalid_argument("optimization_problem option 'num_threads': expected >= 1, got " +
-                                std::to_string(options.num_threads));
+  if (options.num_threads < 1 || options.num_threads > 64) {
+    throw std::invalid_argument(
+        "'slam.pose_graph.optimization_problem.num_threads': expected 1 to 64, got " +
+        std::to_string(options.num_threads));
   }
 }
 

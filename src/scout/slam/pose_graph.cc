@@ -6,6 +6,7 @@
 #include <string>
 #include <utility>
 
+#include "scout/common/format.h"
 #include "scout/common/parallel.h"
 #include "scout/slam/submap_chain.h"
 
@@ -14,9 +15,8 @@ namespace {
 
 void RequirePositive(const char* key, double value) {
   if (!(std::isfinite(value) && value > 0.0)) {
-    throw std::invalid_argument(std::string("pose_graph option '") + key +
-                                "': expected a positive finite number, got " +
-                                std::to_string(value));
+    throw std::invalid_argument(std::string("'slam.pose_graph.") + key +
+                                "': expected a positive finite number, got " + FormatNumber(value));
   }
 }
 
@@ -39,34 +39,34 @@ bool Contains(const std::vector<Constraint>& list, const Constraint& c) {
 
 void Validate(const PoseGraphOptions& options) {
   if (options.optimize_every_n_nodes < 0) {
-    throw std::invalid_argument("pose_graph option 'optimize_every_n_nodes': expected >= 0, got " +
+    throw std::invalid_argument("'slam.pose_graph.optimize_every_n_nodes': expected >= 0, got " +
                                 std::to_string(options.optimize_every_n_nodes));
   }
   if (!(options.optimize_every_travel_m >= 0.0) || std::isinf(options.optimize_every_travel_m)) {
     throw std::invalid_argument(
-        "pose_graph option 'optimize_every_travel_m': expected a finite value >= 0, got " +
-        std::to_string(options.optimize_every_travel_m));
+        "'slam.pose_graph.optimize_every_travel_m': expected a finite value >= 0, got " +
+        FormatNumber(options.optimize_every_travel_m));
   }
   if (options.synchronous_solve_delay_nodes < 0) {
     throw std::invalid_argument(
-        "pose_graph option 'synchronous_solve_delay_nodes': expected >= 0, got " +
+        "'slam.pose_graph.synchronous_solve_delay_nodes': expected >= 0, got " +
         std::to_string(options.synchronous_solve_delay_nodes));
   }
   if (options.skip_neighbour_submaps < 0) {
-    throw std::invalid_argument("pose_graph option 'skip_neighbour_submaps': expected >= 0, got " +
+    throw std::invalid_argument("'slam.pose_graph.skip_neighbour_submaps': expected >= 0, got " +
                                 std::to_string(options.skip_neighbour_submaps));
   }
   RequirePositive("intra_submap_translation_weight", options.intra_submap_translation_weight);
   if (!(options.loop_closure_chain_travel_m >= 0.0) ||
       !std::isfinite(options.loop_closure_chain_travel_m)) {
     throw std::invalid_argument(
-        "pose_graph option 'loop_closure_chain_travel_m': expected a finite value >= 0, got " +
-        std::to_string(options.loop_closure_chain_travel_m));
+        "'slam.pose_graph.loop_closure_chain_travel_m': expected a finite value >= 0, got " +
+        FormatNumber(options.loop_closure_chain_travel_m));
   }
   RequirePositive("outlier_translation_m", options.outlier_translation_m);
   RequirePositive("outlier_rotation_deg", options.outlier_rotation_deg);
   if (options.max_outlier_rounds < 0) {
-    throw std::invalid_argument("pose_graph option 'max_outlier_rounds': expected >= 0, got " +
+    throw std::invalid_argument("'slam.pose_graph.max_outlier_rounds': expected >= 0, got " +
                                 std::to_string(options.max_outlier_rounds));
   }
   RequirePositive("intra_submap_rotation_weight", options.intra_submap_rotation_weight);
