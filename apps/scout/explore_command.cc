@@ -380,7 +380,7 @@ int RunExplore(const ExploreArgs& args) {
             << "goals: " << result.counters.goals_issued << " issued, "
             << result.counters.goals_reached << " reached, " << result.counters.goals_failed
             << " failed, " << result.unreachable_goals << " unreachable in truth; collisions "
-            << result.collisions << "; ATE RMSE " << std::setprecision(3) << ate_rmse_m << " m; "
+            << result.collisions << "; ATE RMSE " << FixedOrDash(ate_rmse_m, 3) << " m; "
             << FrontierLeftText(result) << "\n"
             << "outputs: " << (out.path() / "summary.json").string()
             << ", map.yaml, map.pgm, map.png, coverage.png, trajectory.tum, truth.tum, "

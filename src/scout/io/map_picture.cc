@@ -313,9 +313,14 @@ void WriteCoveragePicture(const grid::OccupancyMap& world,
 
 void WriteMapServerMap(const GlobalSubmaps& submaps, const std::filesystem::path& yaml_path) {
   const std::vector<grid::PlacedGrid> placed = Placed(submaps);
-  const grid::OccupancyMap fused = grid::FuseSubmaps(placed, FinestResolution(placed));
+  const double resolution = FinestResolution(placed);
+  grid::OccupancyMap fused = grid::FuseSubmaps(placed, resolution);
   if (fused.limits.num_cells() == 0) {
-    throw InputError(yaml_path.string() + ": no submap cells to write as a map");
+    // Nothing mapped yet (a run stopped before its first scan saw anything):
+    // a map_server map has at least one cell, so the map is one unknown cell
+    // at the origin rather than no map at all.
+    fused.limits = grid::MapLimits(resolution, Eigen::Vector2d::Zero(), 1, 1);
+    fused.cells.assign(1, grid::CellState::kUnknown);
   }
   grid::WriteMapServerMap(fused, yaml_path);
 }

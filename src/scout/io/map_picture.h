@@ -67,8 +67,9 @@ void WriteCoveragePicture(const grid::OccupancyMap& world,
                           int max_side_px = 3000);
 
 // Writes the fused submaps at the finest submap resolution as a ROS
-// map_server map ('yaml_path' plus a PGM beside it, see grid/map_io.h).
-// Throws InputError when there is no submap or the directory is not writable.
+// map_server map ('yaml_path' plus a PGM beside it, see grid/map_io.h); with
+// nothing mapped yet, one unknown cell at the origin. Throws InputError when
+// the directory is not writable.
 void WriteMapServerMap(const GlobalSubmaps& submaps, const std::filesystem::path& yaml_path);
 
 }  // namespace scout::io

@@ -188,7 +188,12 @@ TEST(WriteMapServerMap, WritesTheFusedMapAtSubmapResolution) {
   EXPECT_EQ(read.limits.height(), fused.limits.height());
   EXPECT_NEAR(read.limits.origin().x(), 1.0, 1e-9);
   EXPECT_TRUE(read.cells == fused.cells);
-  EXPECT_THROW(WriteMapServerMap({}, dir.path() / "empty.yaml"), InputError);
+  // Nothing mapped yet: one unknown cell, so that a run stopped before its
+  // first scan still writes every output.
+  WriteMapServerMap({}, dir.path() / "empty.yaml");
+  const grid::OccupancyMap empty = grid::ReadMapServerMap(dir.path() / "empty.yaml");
+  ASSERT_EQ(empty.limits.num_cells(), 1);
+  EXPECT_EQ(empty.cells[0], grid::CellState::kUnknown);
 }
 
 }  // namespace

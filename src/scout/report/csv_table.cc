@@ -35,6 +35,8 @@ CsvTable CsvTable::Read(const std::filesystem::path& path,
   while (std::getline(in, line)) {
     ++line_number;
     if (!line.empty() && line.back() == '\r') line.pop_back();
+    // Spreadsheets save CSV with a UTF-8 byte order mark before the header.
+    if (line_number == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);
     if (line.empty()) continue;
     std::vector<std::string> fields = SplitFields(line);
     if (table.header_.empty()) {

@@ -204,6 +204,17 @@ TEST(ResultsTables, SummaryValueOfTheWrongTypeNamesTheFileAndKey) {
       EXPECT_TRUE(Contains(e.what(), c.message)) << e.what();
     }
   }
+  // Nested 100,000 deep, printing the value overflowed the stack (SIGSEGV).
+  std::string deep = R"({"world": )";
+  for (int i = 0; i < 100000; ++i) deep += "[";
+  for (int i = 0; i < 100000; ++i) deep += "]";
+  WriteTextFileAtomically(dir / "summary.json", deep + "}");
+  try {
+    ResultsTables(TableKind::kExplore, {dir});
+    ADD_FAILURE() << "expected InputError for a deep summary";
+  } catch (const InputError& e) {
+    EXPECT_TRUE(Contains(e.what(), "nested more than 32 levels deep")) << e.what();
+  }
   // Not measured: null, and frontier-bench's "reference": false.
   WriteTextFileAtomically(dir / "summary.json",
                           R"({"reference": false, "coverage": null, "goals_policy": "scout",

@@ -4,9 +4,11 @@
 #include <cmath>
 #include <fstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "scout/common/error.h"
+#include "scout/common/format.h"
 #include "scout/common/input_file.h"
 #include "scout/report/csv_table.h"
 
@@ -62,6 +64,33 @@ constexpr const char* kSummaryNumbers[] = {"seed",
                                            "consistency/*",
                                            "frontier/strategies/*/*"};
 
+// A value as it stands in the file, cut short: a message must not print
+// a hundred kilobytes of brackets.
+std::string Excerpt(const nlohmann::json& node) {
+  std::string text = node.dump();
+  if (text.size() > 80) text = text.substr(0, 77) + "...";
+  return text;
+}
+
+// Summaries Scout writes nest four levels deep; printing or walking a value
+// nested 100,000 deep overflowed the stack.
+constexpr size_t kMaxSummaryDepth = 32;
+
+// Returns how deep 'root' nests, looking no deeper than 'limit' + 1 (an
+// explicit stack: recursion is what a deep file would break).
+size_t Depth(const nlohmann::json& root, size_t limit) {
+  std::vector<std::pair<const nlohmann::json*, size_t>> stack = {{&root, 1}};
+  size_t deepest = 0;
+  while (!stack.empty()) {
+    const auto [node, depth] = stack.back();
+    stack.pop_back();
+    deepest = std::max(deepest, depth);
+    if (depth > limit || !node->is_structured()) continue;
+    for (const nlohmann::json& child : *node) stack.push_back({&child, depth + 1});
+  }
+  return deepest;
+}
+
 // Checks 'node' against the path segments from 'at' on; 'where' names the
 // keys walked so far.
 void CheckNumbers(const nlohmann::json& node, const std::vector<std::string>& segments, size_t at,
@@ -69,12 +98,12 @@ void CheckNumbers(const nlohmann::json& node, const std::vector<std::string>& se
   if (at == segments.size()) {
     if (node.is_null()) return;
     if (!node.is_number()) {
-      throw InputError(path.string() + ": key '" + where + "' is " + node.dump() +
+      throw InputError(path.string() + ": key '" + where + "' is " + Excerpt(node) +
                        ", expected a number");
     }
     // Counts, times, sizes and errors alike: none of them is negative.
     if (node.get<double>() < 0.0) {
-      throw InputError(path.string() + ": key '" + where + "' is " + node.dump() +
+      throw InputError(path.string() + ": key '" + where + "' is " + Excerpt(node) +
                        ", expected a number >= 0");
     }
     return;
@@ -83,7 +112,7 @@ void CheckNumbers(const nlohmann::json& node, const std::vector<std::string>& se
   // frontier-bench writes "reference": false when it ran no reference.
   if (where == "reference" && node.is_boolean()) return;
   if (!node.is_object()) {
-    throw InputError(path.string() + ": key '" + where + "' is " + node.dump() +
+    throw InputError(path.string() + ": key '" + where + "' is " + Excerpt(node) +
                      ", expected an object");
   }
   const std::string& key = segments[at];
@@ -111,6 +140,10 @@ nlohmann::json ReadSummary(const std::filesystem::path& path) {
     throw InputError(path.string() + ": not valid JSON (" + e.what() + ")");
   }
   if (!summary.is_object()) throw InputError(path.string() + ": expected a JSON object");
+  if (Depth(summary, kMaxSummaryDepth) > kMaxSummaryDepth) {
+    throw InputError(path.string() + ": values nested more than " +
+                     std::to_string(kMaxSummaryDepth) + " levels deep; expected a Scout summary");
+  }
   for (const char* pattern : kSummaryNumbers) {
     std::vector<std::string> segments;
     std::string text = pattern;
@@ -173,11 +206,16 @@ std::vector<CoverageSample> ReadCoverageCsv(const std::filesystem::path& path) {
                        "' is outside 0..1");
     }
     // The figures plot coverage against time and path: both only grow.
-    if (!samples.empty() && (s.sim_time_s < samples.back().sim_time_s ||
-                             s.path_length_m < samples.back().path_length_m)) {
-      throw InputError(table.Where(row) + ": sim_time_s '" + table.Text(row, "sim_time_s") +
-                       "' and path_length_m '" + table.Text(row, "path_length_m") +
-                       "': expected neither to fall below the row before's");
+    for (const auto& [column, value, before] :
+         {std::tuple{"sim_time_s", s.sim_time_s,
+                     samples.empty() ? s.sim_time_s : samples.back().sim_time_s},
+          std::tuple{"path_length_m", s.path_length_m,
+                     samples.empty() ? s.path_length_m : samples.back().path_length_m}}) {
+      if (value < before) {
+        throw InputError(table.Where(row) + ": " + column + " '" + table.Text(row, column) +
+                         "' falls below the row before's (" + FormatNumber(before) +
+                         "); expected it never to fall");
+      }
     }
     samples.push_back(s);
   }

@@ -137,7 +137,10 @@ TEST(RunFigures, BadCsvNamesFileAndLine) {
                ":4: column 'coverage'");
   expect_error("coverage.csv", "sim_time_s,path_length_m,coverage\n1,2,1.5\n", ":2: coverage");
   expect_error("coverage.csv", "sim_time_s,path_length_m,coverage\n2,2,0.5\n1,3,0.6\n",
-               ":3: sim_time_s '1' and path_length_m '3': expected neither to fall below");
+               ":3: sim_time_s '1' falls below the row before's (2)");
+  // A byte order mark before the header is not part of its first column.
+  WriteTextFileAtomically(dir / "bom.csv", "\xEF\xBB\xBF" + header + "0,dfd,5,1,10,1,0,4,0,5\n");
+  EXPECT_EQ(ReadFrontierCsv(dir / "bom.csv").size(), 1u);
   expect_error("frontier.csv", header + "0,dfd,5,1,-10,1,0,4,0,5\n",
                ":2: column 'time_us' is '-10', expected a time >= 0");
   expect_error("frontier.csv", header + "0,dfd,99999999999999999999999,1,10,1,0,4,0,5\n",

@@ -92,6 +92,21 @@ TEST(SvgPlot, GapsBreakTheLineAndLogAxisDropsNonPositiveValues) {
   EXPECT_NE(svg.find(">10k<"), std::string::npos);
 }
 
+TEST(SvgPlot, EscapedTextIsWellFormedUtf8) {
+  EXPECT_EQ(EscapeXml("<a & 'b'>"), "&lt;a &amp; &#39;b&#39;&gt;");
+  // A directory name in Latin-1, a truncated sequence and a control character
+  // each become U+FFFD; well-formed UTF-8 passes unchanged.
+  EXPECT_EQ(EscapeXml("bad\xff\xfename"), "bad\xEF\xBF\xBD\xEF\xBF\xBDname");
+  EXPECT_EQ(EscapeXml("caf\xc3"), "caf\xEF\xBF\xBD");
+  EXPECT_EQ(EscapeXml("a\x01"
+                      "b"),
+            "a\xEF\xBF\xBD"
+            "b");
+  EXPECT_EQ(EscapeXml("caf\xc3\xa9 \xe2\x82\xac \xf0\x9f\x99\x82"),
+            "caf\xc3\xa9 \xe2\x82\xac \xf0\x9f\x99\x82");
+  EXPECT_EQ(EscapeXml("\xed\xa0\x80"), "\xEF\xBF\xBD\xEF\xBF\xBD\xEF\xBF\xBD");  // a surrogate
+}
+
 TEST(SvgPlot, MismatchedSeriesIsRejected) {
   LineChart chart;
   chart.series = {{"a", {0, 1}, {1}}};
