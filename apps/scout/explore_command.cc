@@ -7,6 +7,7 @@
 #include <iomanip>
 #include <iostream>
 #include <map>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <sstream>
@@ -301,7 +302,16 @@ int RunExplore(const ExploreArgs& args) {
   // Everything that can be wrong with the input is found before any output.
   const exploration::ExplorationOptions options = MakeOptions(args);
   const sim::World world = MakeCommandWorld(args.world, args.seed, args.world_size);
-  exploration::ExplorationLoop loop(world, options, args.seed);
+  std::unique_ptr<exploration::ExplorationLoop> loop_owner;
+  try {
+    loop_owner = std::make_unique<exploration::ExplorationLoop>(world, options, args.seed);
+  } catch (const InputError& e) {
+    // The boundary comes from the options file, which its message should name.
+    const std::string message = e.what();
+    if (args.config_file.empty() || message.rfind("explore.boundary", 0) != 0) throw;
+    throw InputError(args.config_file + ": " + message);
+  }
+  exploration::ExplorationLoop& loop = *loop_owner;
   std::optional<io::CarmenLogWriter> log;
   if (args.record_log) {
     const sim::Lidar lidar(options.robot.lidar);
