@@ -286,6 +286,11 @@ TEST_F(ScoutCli, WorldSizeIsValidated) {
   EXPECT_NE(r.output.find("--world-size: expected a value, got an empty string"), std::string::npos)
       << r.output;
   EXPECT_FALSE(fs::exists(dir_ / "d"));
+  r = RunScout("frontier-bench --epsilon 0 --out " + (dir_ / "e").string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("--epsilon: expected a positive number of metres, got 0"),
+            std::string::npos)
+      << r.output;
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -12,6 +13,7 @@
 #include "apps/scout/report_command.h"
 #include "scout/common/atomic_file.h"
 #include "scout/common/error.h"
+#include "scout/common/format.h"
 #include "scout/frontier/frontier_engine.h"
 #include "scout/frontier/stopwatch.h"
 #include "scout/io/config.h"
@@ -54,6 +56,10 @@ int RunFrontierBench(const FrontierBenchArgs& args) {
   const frontier::Stopwatch wall;
   io::ScoutConfig config = LoadConfigOrDefaults(args.config_file);
   if (args.epsilon_m) {
+    if (!(*args.epsilon_m > 0.0) || !std::isfinite(*args.epsilon_m)) {
+      throw InputError("--epsilon: expected a positive number of metres, got " +
+                       FormatNumber(*args.epsilon_m));
+    }
     config.frontier.epsilon_m = *args.epsilon_m;
   }
   const std::vector<std::string> strategies = SplitList(args.strategies, "--strategies");

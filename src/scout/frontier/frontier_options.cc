@@ -12,7 +12,7 @@ namespace {
 void RequirePositive(const char* key, double value) {
   if (!(std::isfinite(value) && value > 0.0)) {
     throw InputError(std::string("frontier option '") + key +
-                     "': expected a positive number of metres, got " + std::to_string(value));
+                     "': expected a positive number of metres, got " + FormatNumber(value));
   }
 }
 
