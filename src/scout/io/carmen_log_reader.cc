@@ -263,53 +263,36 @@ class CarmenParser {
 
   // Keeps each stream's longest run in time order (see time_order.h).
   void DropOutOfTimeOrder() {
-    std::vector<double> times;
-    for (const sensor::LaserScan& scan : dataset_->scans) times.push_back(scan.time_s);
-    const std::vector<bool> keep_scan = LongestTimeOrder(times);
-    std::size_t kept = 0;
+    const std::vector<bool> keep_scan = LongestTimeOrderOf(dataset_->scans);
     for (std::size_t i = 0; i < keep_scan.size(); ++i) {
+      if (keep_scan[i]) continue;
       const auto& [line, kind] = scan_lines_[i];
-      if (!keep_scan[i]) {
-        ++counts_->backwards_scans;
-        --(kind == std::string_view("FLASER") ? counts_->flaser : counts_->robotlaser1);
-        warnings_.Add("scans out of time order",
-                      source_ + ":" + std::to_string(line) + ": " + kind +
-                          " at t=" + FormatNumber(dataset_->scans[i].time_s) +
-                          " s is out of time order with the scans around it; dropped (expected "
-                          "non-decreasing ipc_timestamp)");
-        continue;
-      }
-      if (kept != i) {  // a vector moved onto itself would be left empty
-        dataset_->scans[kept] = std::move(dataset_->scans[i]);
-        dataset_->scan_poses[kept] = dataset_->scan_poses[i];
-        dataset_->scan_odometry[kept] = dataset_->scan_odometry[i];
-        scan_lines_[kept] = scan_lines_[i];
-      }
-      ++kept;
+      ++counts_->backwards_scans;
+      --(kind == std::string_view("FLASER") ? counts_->flaser : counts_->robotlaser1);
+      warnings_.Add("scans out of time order",
+                    source_ + ":" + std::to_string(line) + ": " + kind +
+                        " at t=" + FormatNumber(dataset_->scans[i].time_s) +
+                        " s is out of time order with the scans around it; dropped (expected "
+                        "non-decreasing ipc_timestamp)");
     }
-    dataset_->scans.resize(kept);
-    dataset_->scan_poses.resize(kept);
-    dataset_->scan_odometry.resize(kept);
-    scan_lines_.resize(kept);
+    KeepOnly(keep_scan, &dataset_->scans);
+    KeepOnly(keep_scan, &dataset_->scan_poses);
+    KeepOnly(keep_scan, &dataset_->scan_odometry);
+    KeepOnly(keep_scan, &scan_lines_);
 
-    times.clear();
-    for (const sensor::Odometry& odometry : dataset_->odometry) times.push_back(odometry.time_s);
-    const std::vector<bool> keep_odometry = LongestTimeOrder(times);
-    kept = 0;
+    const std::vector<bool> keep_odometry = LongestTimeOrderOf(dataset_->odometry);
     for (std::size_t i = 0; i < keep_odometry.size(); ++i) {
-      if (!keep_odometry[i]) {
-        ++counts_->backwards_odometry;
-        --counts_->odom;
-        warnings_.Add("odometry messages out of time order",
-                      source_ + ":" + std::to_string(odometry_lines_[i]) +
-                          ": ODOM at t=" + FormatNumber(dataset_->odometry[i].time_s) +
-                          " s is out of time order with the messages around it; dropped "
-                          "(expected non-decreasing ipc_timestamp)");
-        continue;
-      }
-      dataset_->odometry[kept++] = dataset_->odometry[i];
+      if (keep_odometry[i]) continue;
+      ++counts_->backwards_odometry;
+      --counts_->odom;
+      warnings_.Add("odometry messages out of time order",
+                    source_ + ":" + std::to_string(odometry_lines_[i]) +
+                        ": ODOM at t=" + FormatNumber(dataset_->odometry[i].time_s) +
+                        " s is out of time order with the messages around it; dropped "
+                        "(expected non-decreasing ipc_timestamp)");
     }
-    dataset_->odometry.resize(kept);
+    KeepOnly(keep_odometry, &dataset_->odometry);
+    KeepOnly(keep_odometry, &odometry_lines_);
   }
 
   void InferFlaserRangeMax() {

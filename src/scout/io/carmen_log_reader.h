@@ -27,10 +27,11 @@
 //
 // Everything else (PARAM, NEFF, RLASER, ... and '#' comments) is skipped
 // silently and counted. Problems become warnings naming file:line and what
-// was expected, and reading goes on: malformed lines are skipped, a scan or
-// odometry message whose time is earlier than the previous one of its stream
-// is dropped, zero-beam scans are dropped. NaN and infinite ranges are kept
-// (they mean "no return"). A gzip stream that breaks off after some lines
+// was expected, and reading goes on: malformed lines are skipped, scans and
+// odometry messages out of time order are dropped (each stream keeps its
+// longest run in time order, see time_order.h; fewer than half of the scans in
+// order is an error), zero-beam scans are dropped. NaN and infinite ranges are
+// kept (they mean "no return"). A gzip stream that breaks off after some lines
 // keeps those lines with a warning.
 
 #include <cstddef>
@@ -50,8 +51,8 @@ struct CarmenLogCounts {
   std::size_t odom = 0;
   // Messages dropped with a warning.
   std::size_t malformed_lines = 0;
-  std::size_t backwards_scans = 0;
-  std::size_t backwards_odometry = 0;
+  std::size_t backwards_scans = 0;     // out of time order
+  std::size_t backwards_odometry = 0;  // out of time order
   std::size_t zero_beam_scans = 0;
   // Skipped silently: '#' comments and blank lines, and other message types
   // by name (e.g. "PARAM", "NEFF").

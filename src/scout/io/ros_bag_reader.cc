@@ -253,43 +253,30 @@ class BagConverter {
   // Keeps each stream's longest run in time order (see time_order.h); throws
   // InputError if that leaves fewer than half of the scans.
   void Finish() {
-    std::vector<double> times;
-    for (const sensor::LaserScan& scan : dataset_->scans) times.push_back(scan.time_s);
-    const std::vector<bool> keep_scan = LongestTimeOrder(times);
-    std::size_t kept = 0;
+    const std::vector<bool> keep_scan = LongestTimeOrderOf(dataset_->scans);
     for (std::size_t i = 0; i < keep_scan.size(); ++i) {
-      if (!keep_scan[i]) {
-        warnings_.Add("scans out of time order",
-                      source_ + ": LaserScan at t=" + FormatNumber(times[i]) +
-                          " s is out of time order with the scans around it; dropped (expected "
-                          "non-decreasing header stamps)");
-        continue;
-      }
-      if (kept != i) dataset_->scans[kept] = std::move(dataset_->scans[i]);  // not onto itself
-      ++kept;
+      if (keep_scan[i]) continue;
+      warnings_.Add("scans out of time order",
+                    source_ + ": LaserScan at t=" + FormatNumber(dataset_->scans[i].time_s) +
+                        " s is out of time order with the scans around it; dropped (expected "
+                        "non-decreasing header stamps)");
     }
-    dataset_->scans.resize(kept);
-    if (2 * kept < keep_scan.size()) {
-      throw InputError(source_ + ": only " + std::to_string(kept) + " of " +
+    KeepOnly(keep_scan, &dataset_->scans);
+    if (2 * dataset_->scans.size() < keep_scan.size()) {
+      throw InputError(source_ + ": only " + std::to_string(dataset_->scans.size()) + " of " +
                        std::to_string(keep_scan.size()) +
                        " scans are in time order; expected non-decreasing header stamps (are "
                        "the stamps corrupt?)");
     }
-    times.clear();
-    for (const sensor::Odometry& odometry : dataset_->odometry) times.push_back(odometry.time_s);
-    const std::vector<bool> keep_odometry = LongestTimeOrder(times);
-    kept = 0;
+    const std::vector<bool> keep_odometry = LongestTimeOrderOf(dataset_->odometry);
     for (std::size_t i = 0; i < keep_odometry.size(); ++i) {
-      if (!keep_odometry[i]) {
-        warnings_.Add("odometry messages out of time order",
-                      source_ + ": Odometry at t=" + FormatNumber(times[i]) +
-                          " s is out of time order with the messages around it; dropped "
-                          "(expected non-decreasing header stamps)");
-        continue;
-      }
-      dataset_->odometry[kept++] = dataset_->odometry[i];
+      if (keep_odometry[i]) continue;
+      warnings_.Add("odometry messages out of time order",
+                    source_ + ": Odometry at t=" + FormatNumber(dataset_->odometry[i].time_s) +
+                        " s is out of time order with the messages around it; dropped "
+                        "(expected non-decreasing header stamps)");
     }
-    dataset_->odometry.resize(kept);
+    KeepOnly(keep_odometry, &dataset_->odometry);
     warnings_.Finish(source_);
   }
 

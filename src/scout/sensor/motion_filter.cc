@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+
 #include "scout/common/format.h"
 
 namespace scout::sensor {
