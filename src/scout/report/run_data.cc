@@ -4,23 +4,24 @@
 #include <cmath>
 #include <fstream>
 #include <string>
+#include <string_view>
 #include <tuple>
 #include <vector>
 
 #include "scout/common/error.h"
 #include "scout/common/format.h"
 #include "scout/common/input_file.h"
-#include "scout/report/csv_table.h"
+#include "scout/report/csv_reader.h"
 
 namespace scout::report {
 namespace {
 
-int64_t Count(const CsvTable& table, int row, const std::string& column) {
-  const double v = table.Number(row, column);
+int64_t Count(const CsvReader& csv, int column) {
+  const double v = csv.Number(column);
   // Beyond 2^53 a double no longer counts in ones (and 1e23 would not fit int64_t).
   if (v < 0 || v != std::floor(v) || v > 9007199254740992.0) {
-    throw InputError(table.Where(row) + ": column '" + column + "' is '" + table.Text(row, column) +
-                     "', expected a count (integer >= 0)");
+    throw InputError(csv.Where() + ": column '" + csv.Name(column) + "' is '" +
+                     std::string(csv.Text(column)) + "', expected a count (integer >= 0)");
   }
   return static_cast<int64_t>(v);
 }
@@ -168,53 +169,59 @@ const CoverageSample* FirstReaching(const std::vector<CoverageSample>& coverage,
 }
 
 std::vector<FrontierRound> ReadFrontierCsv(const std::filesystem::path& path) {
-  const CsvTable table =
-      CsvTable::Read(path, {"round", "strategy", "queried_points", "queried_submaps", "time_us",
-                            "tp", "fp", "tn", "fn"});
-  const bool has_local_points = table.Has("local_points");
+  CsvReader csv(path, {"round", "strategy", "queried_points", "queried_submaps", "time_us", "tp",
+                       "fp", "tn", "fn"});
+  const int round = csv.Column("round"), strategy = csv.Column("strategy"),
+            queried_points = csv.Column("queried_points"),
+            queried_submaps = csv.Column("queried_submaps"), time_us = csv.Column("time_us"),
+            tp = csv.Column("tp"), fp = csv.Column("fp"), tn = csv.Column("tn"),
+            fn = csv.Column("fn");
+  const int local_points = csv.Has("local_points") ? csv.Column("local_points") : -1;
   std::vector<FrontierRound> rounds;
-  for (int row = 0; row < table.rows(); ++row) {
+  while (csv.Next()) {
     FrontierRound r;
-    r.round = static_cast<int>(Count(table, row, "round"));
-    r.strategy = table.Text(row, "strategy");
-    if (r.strategy.empty()) throw InputError(table.Where(row) + ": empty strategy name");
-    r.queried_points = Count(table, row, "queried_points");
-    r.queried_submaps = Count(table, row, "queried_submaps");
-    r.time_us = table.Number(row, "time_us");
+    r.round = static_cast<int>(Count(csv, round));
+    const std::string_view name = csv.Text(strategy);
+    if (name.empty()) throw InputError(csv.Where() + ": empty strategy name");
+    r.strategy = name;
+    r.queried_points = Count(csv, queried_points);
+    r.queried_submaps = Count(csv, queried_submaps);
+    r.time_us = csv.Number(time_us);
     if (!(r.time_us >= 0.0)) {
-      throw InputError(table.Where(row) + ": column 'time_us' is '" + table.Text(row, "time_us") +
+      throw InputError(csv.Where() + ": column 'time_us' is '" + std::string(csv.Text(time_us)) +
                        "', expected a time >= 0");
     }
-    r.tp = Count(table, row, "tp");
-    r.fp = Count(table, row, "fp");
-    r.tn = Count(table, row, "tn");
-    r.fn = Count(table, row, "fn");
-    if (has_local_points) r.local_points = Count(table, row, "local_points");
+    r.tp = Count(csv, tp);
+    r.fp = Count(csv, fp);
+    r.tn = Count(csv, tn);
+    r.fn = Count(csv, fn);
+    if (local_points >= 0) r.local_points = Count(csv, local_points);
     rounds.push_back(std::move(r));
   }
   return rounds;
 }
 
 std::vector<CoverageSample> ReadCoverageCsv(const std::filesystem::path& path) {
-  const CsvTable table = CsvTable::Read(path, {"sim_time_s", "path_length_m", "coverage"});
+  CsvReader csv(path, {"sim_time_s", "path_length_m", "coverage"});
+  const int sim_time = csv.Column("sim_time_s"), path_length = csv.Column("path_length_m"),
+            coverage = csv.Column("coverage");
   std::vector<CoverageSample> samples;
-  for (int row = 0; row < table.rows(); ++row) {
-    CoverageSample s{table.Number(row, "sim_time_s"), table.Number(row, "path_length_m"),
-                     table.Number(row, "coverage")};
+  while (csv.Next()) {
+    CoverageSample s{csv.Number(sim_time), csv.Number(path_length), csv.Number(coverage)};
     if (s.coverage < 0.0 || s.coverage > 1.0 + 1e-9) {
-      throw InputError(table.Where(row) + ": coverage '" + table.Text(row, "coverage") +
+      throw InputError(csv.Where() + ": coverage '" + std::string(csv.Text(coverage)) +
                        "' is outside 0..1");
     }
     // The figures plot coverage against time and path: both only grow.
     for (const auto& [column, value, before] :
-         {std::tuple{"sim_time_s", s.sim_time_s,
+         {std::tuple{sim_time, s.sim_time_s,
                      samples.empty() ? s.sim_time_s : samples.back().sim_time_s},
-          std::tuple{"path_length_m", s.path_length_m,
+          std::tuple{path_length, s.path_length_m,
                      samples.empty() ? s.path_length_m : samples.back().path_length_m}}) {
       if (value < before) {
-        throw InputError(table.Where(row) + ": " + column + " '" + table.Text(row, column) +
-                         "' falls below the row before's (" + FormatNumber(before) +
-                         "); expected it never to fall");
+        throw InputError(csv.Where() + ": " + csv.Name(column) + " '" +
+                         std::string(csv.Text(column)) + "' falls below the row before's (" +
+                         FormatNumber(before) + "); expected it never to fall");
       }
     }
     samples.push_back(s);

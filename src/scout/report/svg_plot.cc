@@ -6,6 +6,8 @@
 #include <limits>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 #include "scout/report/axis_ticks.h"
 
@@ -45,6 +47,57 @@ struct Frame {
                            : (v - y_axis.lo) / (y_axis.hi - y_axis.lo);
     return bottom - t * (bottom - top);
   }
+};
+
+// A point of a line in picture coordinates (px).
+struct Pixel {
+  double x, y;
+};
+
+// Consecutive points of a line that fall in one column kColumnPx wide. Kept()
+// returns its first, lowest, highest and last point in their order along the
+// line: drawn through those, the line covers the same pixels.
+class ColumnRun {
+ public:
+  static constexpr double kColumnPx = 0.25;
+
+  bool Accepts(const Pixel& p) const {
+    return count_ == 0 || std::floor(p.x / kColumnPx) == column_;
+  }
+  void Add(const Pixel& p) {
+    if (count_ == 0) {
+      column_ = std::floor(p.x / kColumnPx);
+      first_ = lowest_ = highest_ = p;
+      lowest_at_ = highest_at_ = 0;
+    }
+    // Screen y grows downwards; "lowest" is the largest y.
+    if (p.y > lowest_.y) lowest_ = p, lowest_at_ = count_;
+    if (p.y < highest_.y) highest_ = p, highest_at_ = count_;
+    last_ = p;
+    last_at_ = count_;
+    ++count_;
+  }
+  std::vector<Pixel> Kept() const {
+    std::vector<Pixel> kept;
+    if (count_ == 0) return kept;
+    kept.push_back(first_);
+    const bool lowest_first = lowest_at_ <= highest_at_;
+    const std::pair<const Pixel*, size_t> middle[] = {
+        {lowest_first ? &lowest_ : &highest_, lowest_first ? lowest_at_ : highest_at_},
+        {lowest_first ? &highest_ : &lowest_, lowest_first ? highest_at_ : lowest_at_}};
+    size_t previous = 0;
+    for (const auto& [p, at] : middle) {
+      if (at > previous) kept.push_back(*p), previous = at;
+    }
+    if (last_at_ > previous) kept.push_back(last_);
+    return kept;
+  }
+  void Clear() { count_ = 0; }
+
+ private:
+  double column_ = 0.0;
+  Pixel first_{}, lowest_{}, highest_{}, last_{};
+  size_t lowest_at_ = 0, highest_at_ = 0, last_at_ = 0, count_ = 0;
 };
 
 struct LegendEntry {
@@ -310,7 +363,19 @@ std::string RenderLineChart(const LineChart& chart) {
     const char* colour = SeriesColour(static_cast<int>(s));
     svg << "<g class=\"series\" data-name=\"" << EscapeXml(series.name) << "\">";
     std::string points;
+    // A run of consecutive points within one column a quarter pixel wide is
+    // drawn through its first, lowest, highest and last point only: the line
+    // looks the same, and a series of a million rounds (a long run's
+    // frontier.csv) gives a figure of kilobytes, not of tens of megabytes.
+    ColumnRun run;
+    const auto emit = [&] {
+      for (const Pixel& p : run.Kept()) {
+        points += (points.empty() ? "" : " ") + Num(p.x) + "," + Num(p.y);
+      }
+      run.Clear();
+    };
     const auto flush = [&] {
+      emit();
       if (points.empty()) return;
       svg << "<polyline class=\"line\" fill=\"none\" stroke=\"" << colour
           << "\" stroke-width=\"2\" stroke-linejoin=\"round\" stroke-dasharray=\""
@@ -323,7 +388,9 @@ std::string RenderLineChart(const LineChart& chart) {
         flush();
         continue;
       }
-      points += (points.empty() ? "" : " ") + Num(f.X(series.x[i])) + "," + Num(f.Y(y));
+      const Pixel p{f.X(series.x[i]), f.Y(y)};
+      if (!run.Accepts(p)) emit();
+      run.Add(p);
     }
     flush();
     if (legend[s].marker) {

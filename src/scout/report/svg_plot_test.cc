@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <limits>
+#include <sstream>
+#include <string>
 
 #include "scout/report/xml_check.h"
 
@@ -70,6 +72,48 @@ TEST(SvgPlot, LongSeriesHaveNoMarkersAndEveryPointIsOnTheLine) {
   ASSERT_NE(points, std::string::npos);
   const std::string list = svg.substr(points + 8, svg.find('"', points + 8) - points - 8);
   EXPECT_EQ(Count(list, ","), 200);
+}
+
+// A long run's frontier.csv holds a million rounds: the line is drawn through
+// the extremes of each quarter-pixel column only, and a spike of one round
+// still shows.
+TEST(SvgPlot, MillionPointSeriesIsSmallAndKeepsItsSpikes) {
+  LineChart chart;
+  chart.title = "long";
+  Series s{"s", {}, {}};
+  for (int i = 0; i < 1000000; ++i) {
+    s.x.push_back(i);
+    s.y.push_back(i == 123457 ? 1000.0 : i == 777777 ? -1000.0 : 0.1 * (i % 10));
+  }
+  chart.series = {s};
+  const std::string svg = RenderLineChart(chart);
+  ASSERT_EQ(CheckXml(svg).error, "");
+  const size_t points = svg.find("points=\"");
+  ASSERT_NE(points, std::string::npos);
+  const std::string list = svg.substr(points + 8, svg.find('"', points + 8) - points - 8);
+  // At most four points per quarter-pixel column of the 760 px wide picture.
+  EXPECT_LE(Count(list, ","), 4 * 4 * 760);
+  EXPECT_LT(svg.size(), 500000u);
+  double top = std::numeric_limits<double>::infinity(), bottom = -top;
+  double previous_x = -top;
+  bool x_in_order = true;
+  std::istringstream in(list);
+  for (std::string pair; in >> pair;) {
+    const double x = std::stod(pair.substr(0, pair.find(',')));
+    const double y = std::stod(pair.substr(pair.find(',') + 1));
+    x_in_order = x_in_order && x >= previous_x;
+    previous_x = x;
+    top = std::min(top, y);
+    bottom = std::max(bottom, y);
+  }
+  EXPECT_TRUE(x_in_order);
+  // The y axis runs from -1000 to 1000, and both one-round spikes reach its
+  // ends: the plot's bottom edge (440 - 58 px) and near its top (under the
+  // title and legend, about 60 px), far from the zero line in the middle.
+  EXPECT_NE(svg.find(">-1000<"), std::string::npos);
+  EXPECT_NE(svg.find(">1000<"), std::string::npos);
+  EXPECT_DOUBLE_EQ(bottom, 382.0);
+  EXPECT_LT(top, 100.0);
 }
 
 TEST(SvgPlot, GapsBreakTheLineAndLogAxisDropsNonPositiveValues) {
