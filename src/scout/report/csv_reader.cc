@@ -57,13 +57,13 @@ bool CsvReader::Next() {
     if (line_.empty()) continue;
     const size_t n = Split();
     if (n != header_.size()) {
-      throw InputError(Where() + ": expected " + std::to_string(header_.size()) +
-                       " fields, got " + std::to_string(n));
+      throw InputError(Where() + ": expected " + std::to_string(header_.size()) + " fields, got " +
+                       std::to_string(n));
     }
     return true;
   }
-  if (in_.bad()) throw InputError(path_.string() + ": read error after line " +
-                                  std::to_string(line_number_));
+  if (in_.bad())
+    throw InputError(path_.string() + ": read error after line " + std::to_string(line_number_));
   return false;
 }
 
