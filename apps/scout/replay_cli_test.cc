@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <random>
 #include <sstream>
@@ -107,8 +108,9 @@ TEST_F(ReplayCli, MapsTheLoopAccuratelyAndWritesEveryOutput) {
   ASSERT_EQ(r.exit_code, 0) << r.output;
   // The malformed line is reported with its line number, and the run goes on.
   EXPECT_NE(r.output.find("corridor.log:"), std::string::npos) << r.output;
-  for (const char* name : {"summary.json", "map.yaml", "map.pgm", "map.png", "trajectory.tum",
-                           "reference.tum", "frontier.csv", "frontiers.png", "report.html"}) {
+  for (const char* name :
+       {"summary.json", "map.yaml", "map.pgm", "map.png", "navigation_points.csv", "trajectory.tum",
+        "reference.tum", "frontier.csv", "frontiers.png", "report.html"}) {
     EXPECT_TRUE(fs::exists(out / name)) << name;
   }
   const nlohmann::json s = nlohmann::json::parse(ReadFile(out / "summary.json"));
@@ -141,6 +143,46 @@ TEST_F(ReplayCli, MapsTheLoopAccuratelyAndWritesEveryOutput) {
   };
   EXPECT_EQ(count_poses(out / "trajectory.tum"), s["slam"]["nodes"].get<int>());
   EXPECT_EQ(count_poses(out / "reference.tum"), s["reference"]["matched_scans"].get<int>());
+}
+
+// Part of a lap leaves the corridor open ahead of the robot and behind the
+// start: replay names where an explorer would go next, without driving there.
+TEST_F(ReplayCli, NamesTheNavigationPointsOfTheMapItEndsWith) {
+  const fs::path out = Dir() / "partial";
+  const Result r =
+      RunScout("replay " + Log() + " --max-scans 60 --synchronous --quiet --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("navigation points: "), std::string::npos) << r.output;
+  const nlohmann::json s = nlohmann::json::parse(ReadFile(out / "summary.json"));
+  const nlohmann::json& n = s["navigation_points"];
+  EXPECT_EQ(n["strategy"], "exact");
+  EXPECT_GT(n["frontier_points"].get<int>(), 0) << n.dump();
+  EXPECT_FALSE(n["robot_boxed_in"].get<bool>());
+  const int count = n["count"].get<int>();
+  EXPECT_GE(count, 1) << n.dump();
+  EXPECT_LE(count, n["components"].get<int>()) << n.dump();
+  std::istringstream csv(ReadFile(out / "navigation_points.csv"));
+  std::string line;
+  std::getline(csv, line);
+  EXPECT_EQ(line, "rank,x_m,y_m,path_cost_m,info_gain_m2,revenue,cluster,component_points");
+  int rows = 0;
+  double previous_revenue = std::numeric_limits<double>::infinity();
+  const Eigen::Vector2d robot(n["robot_x_m"].get<double>(), n["robot_y_m"].get<double>());
+  while (std::getline(csv, line)) {
+    ++rows;
+    double rank, x, y, cost, gain, revenue;
+    ASSERT_EQ(
+        std::sscanf(line.c_str(), "%lf,%lf,%lf,%lf,%lf,%lf", &rank, &x, &y, &cost, &gain, &revenue),
+        6)
+        << line;
+    EXPECT_EQ(rank, rows);
+    EXPECT_LE(revenue, previous_revenue + 1e-9) << "best revenue first: " << line;
+    previous_revenue = revenue;
+    // A path is never shorter than the straight line (less a cell of rounding).
+    EXPECT_GE(cost, (Eigen::Vector2d(x, y) - robot).norm() - 0.1) << line;
+    EXPECT_GT(gain, 0.0) << line;
+  }
+  EXPECT_EQ(rows, count);
 }
 
 // Scans with repeated times are replayed one period apart, so each still gets

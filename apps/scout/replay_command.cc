@@ -15,8 +15,10 @@
 #include "scout/common/atomic_file.h"
 #include "scout/common/error.h"
 #include "scout/common/resource_usage.h"
+#include "scout/explore/map_navigation_points.h"
 #include "scout/frontier/frontier_engine.h"
 #include "scout/frontier/stopwatch.h"
+#include "scout/grid/submap_fusion.h"
 #include "scout/io/config.h"
 #include "scout/io/dataset.h"
 #include "scout/io/frontier_report.h"
@@ -196,6 +198,44 @@ CLI::App* AddReplayCommand(CLI::App& app, ReplayArgs* args) {
   return cmd;
 }
 
+// Where an explorer would go next from the last pose of the replay: the
+// navigation points of the final map (explore.policy.navigation,
+// explore.traversability with robot.radius_m), as the exploration loop ranks them.
+explore::MapNavigationPoints FinalNavigationPoints(const io::ScoutConfig& config,
+                                                   const io::GlobalSubmaps& submaps,
+                                                   const std::vector<Eigen::Vector2d>& frontier,
+                                                   const std::vector<slam::TimedPose>& nodes) {
+  std::vector<grid::PlacedGrid> placed;
+  double resolution_m = 0.0;
+  for (const auto& [pose, grid] : submaps) {
+    placed.push_back({grid.get(), pose});
+    const double r = grid->limits().resolution();
+    resolution_m = resolution_m == 0.0 ? r : std::min(resolution_m, r);
+  }
+  const grid::OccupancyMap map = grid::FuseSubmaps(placed, resolution_m);
+  std::vector<Eigen::Vector2d> driven;
+  driven.reserve(nodes.size());
+  for (const slam::TimedPose& n : nodes) driven.push_back(n.pose.translation());
+  explore::TraversabilityOptions traversability = config.explore.traversability;
+  traversability.robot_radius_m = config.robot.robot.radius_m;
+  return explore::NavigationPointsOnMap(map, frontier, driven.back(), driven, traversability,
+                                        config.explore.policy.navigation);
+}
+
+// navigation_points.csv: one row per navigation point, best first.
+std::string NavigationPointsCsv(const std::vector<explore::NavigationPoint>& points) {
+  std::ostringstream csv;
+  csv << "rank,x_m,y_m,path_cost_m,info_gain_m2,revenue,cluster,component_points\n";
+  csv << std::fixed;
+  for (size_t k = 0; k < points.size(); ++k) {
+    const explore::NavigationPoint& p = points[k];
+    csv << k + 1 << "," << std::setprecision(3) << p.position.x() << "," << p.position.y() << ","
+        << p.cost_m << "," << p.info_gain_m2 << "," << p.revenue << "," << p.cluster << ","
+        << p.component_size << "\n";
+  }
+  return csv.str();
+}
+
 int RunReplay(const ReplayArgs& args) {
   const frontier::Stopwatch wall;
   io::ScoutConfig config = LoadConfigOrDefaults(args.config_file);
@@ -319,11 +359,32 @@ int RunReplay(const ReplayArgs& args) {
   summary["grid_change_events"] = engine.grid_change_events();
   summary["submap_update_ms"] = engine.catalog_time_ms();
   summary["frontier"] = io::FrontierSummary(engine);
+  const std::vector<Eigen::Vector2d> frontier = engine.GlobalFrontier(picture_strategy);
+  const explore::MapNavigationPoints navigation =
+      FinalNavigationPoints(config, submaps, frontier, nodes);
+  summary["navigation_points"] = {
+      {"strategy", picture_strategy},
+      {"frontier_points", frontier.size()},
+      {"count", navigation.points.size()},
+      {"clusters", navigation.stats.clusters},
+      {"components", navigation.stats.components},
+      {"unreachable_components", navigation.stats.unreachable_components},
+      {"robot_x_m", nodes.back().pose.translation().x()},
+      {"robot_y_m", nodes.back().pose.translation().y()},
+      {"robot_escaped", navigation.robot_escaped},
+      {"robot_boxed_in", navigation.robot_boxed_in}};
 
   io::WriteMapServerMap(submaps, out.Stage("map.yaml"));
   // map_server's YAML names its image beside it.
   out.Stage("map.pgm");
-  io::WriteMapPicture(submaps, trajectory, out.Stage("map.png"));
+  io::MapOverlay overlay;
+  overlay.frontier = frontier;
+  for (const explore::NavigationPoint& p : navigation.points) {
+    overlay.candidates.push_back(p.position);
+  }
+  io::WriteMapPicture(submaps, trajectory, overlay, out.Stage("map.png"));
+  WriteTextFileAtomically(out.Stage("navigation_points.csv"),
+                          NavigationPointsCsv(navigation.points));
   io::WriteTumTrajectory(trajectory, out.Stage("trajectory.tum"));
   if (reference) {
     // The reference pose of every paired node, stamped like trajectory.tum,
@@ -374,8 +435,18 @@ int RunReplay(const ReplayArgs& args) {
     std::cout << "\n";
   }
   PrintStrategyTable(engine, std::cout);
+  std::cout << "navigation points: " << navigation.points.size() << " from the last pose ("
+            << frontier.size() << " " << picture_strategy << " frontier points, "
+            << navigation.stats.unreachable_components << " unreachable components)";
+  if (!navigation.points.empty()) {
+    const explore::NavigationPoint& best = navigation.points.front();
+    std::cout << "; best (" << std::setprecision(2) << best.position.x() << ", "
+              << best.position.y() << ") m, " << best.cost_m << " m of path";
+  }
+  if (navigation.robot_boxed_in) std::cout << "; the robot's disc fits nowhere near its last pose";
+  std::cout << "\n";
   std::cout << "outputs: " << (out.path() / "summary.json").string()
-            << ", map.yaml, map.pgm, map.png, trajectory.tum, "
+            << ", map.yaml, map.pgm, map.png, navigation_points.csv, trajectory.tum, "
             << (reference ? "reference.tum, " : "") << "frontier.csv, frontiers.png, report.html\n";
   return 0;
 }
