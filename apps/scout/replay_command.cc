@@ -360,8 +360,10 @@ int RunReplay(const ReplayArgs& args) {
   summary["submap_update_ms"] = engine.catalog_time_ms();
   summary["frontier"] = io::FrontierSummary(engine);
   const std::vector<Eigen::Vector2d> frontier = engine.GlobalFrontier(picture_strategy);
+  const frontier::Stopwatch navigation_watch;
   const explore::MapNavigationPoints navigation =
       FinalNavigationPoints(config, submaps, frontier, nodes);
+  const double navigation_time_s = navigation_watch.ElapsedUs() * 1e-6;
   summary["navigation_points"] = {
       {"strategy", picture_strategy},
       {"frontier_points", frontier.size()},
@@ -372,7 +374,8 @@ int RunReplay(const ReplayArgs& args) {
       {"robot_x_m", nodes.back().pose.translation().x()},
       {"robot_y_m", nodes.back().pose.translation().y()},
       {"robot_escaped", navigation.robot_escaped},
-      {"robot_boxed_in", navigation.robot_boxed_in}};
+      {"robot_boxed_in", navigation.robot_boxed_in},
+      {"time_s", navigation_time_s}};
 
   io::WriteMapServerMap(submaps, out.Stage("map.yaml"));
   // map_server's YAML names its image beside it.
