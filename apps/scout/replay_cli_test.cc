@@ -36,7 +36,7 @@ std::string ReadFile(const fs::path& path) {
 // pose, and ODOM lines; the odometry drifts (2 % scale error and a slow
 // heading bias), as wheel odometry does.
 // With 'zero_times' every line is stamped 0, as in the Radish orebro log.
-void WriteCorridorLog(const fs::path& path, bool zero_times = false) {
+void WriteCorridorLog(const fs::path& path, bool zero_times = false, double laps = 1.5) {
   const std::vector<scout::slam::global_testing::Wall> walls =
       scout::slam::global_testing::CorridorLoop();
   std::mt19937 rng(5);
@@ -47,7 +47,7 @@ void WriteCorridorLog(const fs::path& path, bool zero_times = false) {
   const double step_m = 0.2;
   Rigid2d odometry;
   Rigid2d previous = scout::slam::global_testing::RoundedLoopPose(0.0);
-  for (int i = 0; i * step_m < 1.5 * lap_m; ++i) {
+  for (int i = 0; i * step_m < laps * lap_m; ++i) {
     const double t = zero_times ? 0.01 : 100.0 + 0.4 * i;
     const Rigid2d pose = scout::slam::global_testing::RoundedLoopPose(i * step_m);
     const Rigid2d delta = previous.inverse() * pose;
@@ -115,6 +115,8 @@ TEST_F(ReplayCli, MapsTheLoopAccuratelyAndWritesEveryOutput) {
   }
   const nlohmann::json s = nlohmann::json::parse(ReadFile(out / "summary.json"));
   EXPECT_EQ(s["format"], "carmen");
+  EXPECT_TRUE(s["interrupted_by"].is_null());
+  EXPECT_EQ(s["scans"], s["dataset_scans"]);
   EXPECT_GT(s["slam"]["nodes"].get<int>(), 200);
   EXPECT_GE(s["slam"]["submaps"].get<int>(), 4) << s["slam"].dump();
   EXPECT_GE(s["slam"]["optimizations"].get<int>(), 2);
@@ -183,6 +185,35 @@ TEST_F(ReplayCli, NamesTheNavigationPointsOfTheMapItEndsWith) {
     EXPECT_GT(gain, 0.0) << line;
   }
   EXPECT_EQ(rows, count);
+}
+
+// Ctrl-C stops a long replay after the scan in hand: the scans so far are
+// mapped and written, as with --max-scans, and the exit code says it stopped.
+TEST_F(ReplayCli, AnInterruptedReplayKeepsTheScansSoFar) {
+  const fs::path log = Dir() / "long.log";
+  WriteCorridorLog(log, /*zero_times=*/false, /*laps=*/12.0);
+  const fs::path out = Dir() / "interrupted";
+  const Result r = scout::testing::RunScoutAndInterrupt(
+      "replay " + log.string() + " --reference " + log.string() + " --synchronous --quiet --out " +
+          out.string(),
+      out.string());
+  EXPECT_EQ(r.exit_code, 130) << r.output;
+  EXPECT_NE(r.output.find("scout: replay stopped by SIGINT after "), std::string::npos) << r.output;
+  std::ifstream in(out / "summary.json");
+  const nlohmann::json s = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+  ASSERT_TRUE(s.is_object()) << r.output;
+  EXPECT_EQ(s["interrupted_by"], "SIGINT");
+  const int scans = s["scans"].get<int>();
+  EXPECT_GT(scans, 0);
+  EXPECT_LT(scans, s["dataset_scans"].get<int>());
+  // Every output of the scans so far, consistent with each other.
+  for (const char* name : {"map.yaml", "map.pgm", "map.png", "navigation_points.csv",
+                           "trajectory.tum", "reference.tum", "frontier.csv", "report.html"}) {
+    EXPECT_TRUE(fs::is_regular_file(out / name)) << name;
+  }
+  EXPECT_LE(s["slam"]["nodes"].get<int>(), scans);
+  EXPECT_EQ(s["reference"]["matched_scans"].get<int>(), s["slam"]["nodes"].get<int>());
+  EXPECT_LT(s["reference"]["ate_rmse_m"].get<double>(), 0.10) << s["reference"].dump();
 }
 
 // Scans with repeated times are replayed one period apart, so each still gets

@@ -280,16 +280,27 @@ int RunReplay(const ReplayArgs& args) {
   slam::MapBuilder builder(config.slam,
                            [&engine](events::SubmapEvent event) { engine.Apply(event); });
   const double data_start_s = dataset.scans.front().time_s;
-  const double data_duration_s = dataset.scans.back().time_s - data_start_s;
   size_t next_odometry = 0;
-  const size_t num_scans = dataset.scans.size();
+  const size_t dataset_scans = dataset.scans.size();
+  size_t num_scans = dataset_scans;
+  // Ctrl-C (SIGINT) or SIGTERM stops the replay after the scan in hand; the
+  // scans so far are mapped and written, as with --max-scans.
+  int stop_signal = 0;
   for (size_t i = 0; i < num_scans; ++i) {
     const sensor::LaserScan& scan = dataset.scans[i];
     while (next_odometry < dataset.odometry.size() &&
            dataset.odometry[next_odometry].time_s <= scan.time_s) {
       builder.AddOdometry(dataset.odometry[next_odometry++]);
     }
-    ThrowIfInterrupted();
+    if ((stop_signal = PendingSignal()) != 0) {
+      // Nothing mapped yet: nothing to write.
+      if (i == 0) ThrowIfInterrupted();
+      num_scans = i;
+      dataset.scans.resize(i);
+      if (!dataset.scan_poses.empty()) dataset.scan_poses.resize(i);
+      if (!dataset.scan_odometry.empty()) dataset.scan_odometry.resize(i);
+      break;
+    }
     builder.AddScan(scan);
     const bool report = (i + 1) % 500 == 0 || i + 1 == num_scans;
     if (report && !args.quiet) {
@@ -300,12 +311,14 @@ int RunReplay(const ReplayArgs& args) {
     }
   }
   if (terminal) std::cerr << "\n";
+  const double data_duration_s = dataset.scans.back().time_s - data_start_s;
   builder.Finish();
   engine.Flush();
   const double wall_time_s = wall.ElapsedUs() * 1e-6;
 
   const std::vector<slam::TimedPose> nodes = builder.GetTrajectory();
   if (nodes.empty()) {
+    if (stop_signal != 0) ThrowIfInterrupted();
     // Every scan was dropped by the range filter (no return and no miss), or
     // had no pose to insert it at: there is nothing to map.
     throw InputError(args.dataset + ": none of the " + std::to_string(num_scans) +
@@ -325,6 +338,8 @@ int RunReplay(const ReplayArgs& args) {
   summary["dataset_file"] = args.dataset;
   summary["format"] = dataset.format;
   summary["scans"] = num_scans;
+  summary["dataset_scans"] = dataset_scans;
+  summary["interrupted_by"] = stop_signal != 0 ? nlohmann::json(SignalName(stop_signal)) : nullptr;
   summary["odometry_readings"] = dataset.odometry.size();
   summary["odometry_source"] = odometry_source;
   summary["odom_noise"] = args.odom_noise;
@@ -451,6 +466,13 @@ int RunReplay(const ReplayArgs& args) {
   std::cout << "outputs: " << (out.path() / "summary.json").string()
             << ", map.yaml, map.pgm, map.png, navigation_points.csv, trajectory.tum, "
             << (reference ? "reference.tum, " : "") << "frontier.csv, frontiers.png, report.html\n";
+  if (stop_signal != 0) {
+    // The replay so far is complete in itself and written; the exit code
+    // still tells a script that it did not reach the end of the dataset.
+    std::cerr << "scout: replay stopped by " << SignalName(stop_signal) << " after " << num_scans
+              << " of " << dataset_scans << " scans; the replay so far is written\n";
+    return 128 + stop_signal;
+  }
   return 0;
 }
 
