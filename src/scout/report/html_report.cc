@@ -1,5 +1,6 @@
 #include "scout/report/html_report.h"
 
+#include <algorithm>
 #include <sstream>
 
 #include "scout/report/strategy_stats.h"
@@ -52,6 +53,23 @@ std::string RenderRunReport(const RunData& run, const std::vector<Figure>& figur
            << PngDataUri(picture) << "\"><figcaption>" << EscapeXml(name)
            << "</figcaption></figure>\n";
     }
+  }
+  if (!run.navigation_points.empty()) {
+    // A long list helps nobody: the best ones are what an explorer would try.
+    constexpr size_t kShown = 20;
+    const size_t n = run.navigation_points.size();
+    body << "<h2 id=\"navigation\">Navigation points</h2>\n<p>Where an explorer would go next "
+            "from the last pose, best revenue (info multiplier × unknown area − path length) first"
+         << (n > kShown ? "; the first " + std::to_string(kShown) + " of " + std::to_string(n) : "")
+         << " (navigation_points.csv).</p>\n";
+    std::vector<std::vector<std::string>> rows;
+    for (size_t k = 0; k < std::min(n, kShown); ++k) {
+      const NavigationPointRow& p = run.navigation_points[k];
+      rows.push_back({std::to_string(p.rank), FormatNumber("%.2f", p.x_m),
+                      FormatNumber("%.2f", p.y_m), FormatNumber("%.2f", p.path_cost_m),
+                      FormatNumber("%.2f", p.info_gain_m2), FormatNumber("%.2f", p.revenue)});
+    }
+    body << HtmlTable({"rank", "x (m)", "y (m)", "path (m)", "unknown area (m²)", "revenue"}, rows);
   }
   if (!figures.empty()) {
     body << "<h2 id=\"figures\">Figures</h2>\n";

@@ -96,6 +96,40 @@ TEST(HtmlReport, ExploreRunWithoutFrontierData) {
   EXPECT_NE(FindFile(files, "figures/coverage_path.svg"), nullptr);
 }
 
+// A replay's navigation_points.csv: the best twenty, in rank order.
+TEST(HtmlReport, ReplayRunListsTheBestNavigationPoints) {
+  const std::filesystem::path dir = testing::WriteFrontierRun("navigation");
+  std::string csv = "rank,x_m,y_m,path_cost_m,info_gain_m2,revenue,cluster,component_points\n";
+  for (int k = 1; k <= 25; ++k) {
+    csv += std::to_string(k) + "," + std::to_string(k) + ".500,-2.250,3.000,1.000," +
+           std::to_string(30 - k) + ".000,0,10\n";
+  }
+  WriteTextFileAtomically(dir / "navigation_points.csv", csv);
+  const std::vector<ReportFile> files = BuildRunReport(dir);
+  const std::string& html = FindFile(files, "report.html")->content;
+  ExpectSelfContained(html);
+  EXPECT_NE(html.find("Navigation points"), std::string::npos);
+  EXPECT_NE(html.find("the first 20 of 25"), std::string::npos);
+  EXPECT_NE(html.find("<td class=\"num\">1</td><td class=\"num\">1.50</td>"
+                      "<td class=\"num\">-2.25</td>"),
+            std::string::npos)
+      << html;
+  EXPECT_NE(html.find("<td class=\"num\">20</td><td class=\"num\">20.50</td>"), std::string::npos);
+  EXPECT_EQ(html.find("<td class=\"num\">21</td><td class=\"num\">21.50</td>"), std::string::npos);
+  // Ranks out of order name the file and line.
+  WriteTextFileAtomically(dir / "navigation_points.csv",
+                          "rank,x_m,y_m,path_cost_m,info_gain_m2,revenue,cluster,"
+                          "component_points\n2,1,1,1,1,1,0,1\n");
+  try {
+    BuildRunReport(dir);
+    ADD_FAILURE() << "no error for a rank of 2 in the first row";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("navigation_points.csv:2: rank '2', expected 1"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(Compare, TwoRunsSideBySide) {
   const std::filesystem::path a = testing::WriteFrontierRun("eps_a");
   const std::filesystem::path b = testing::WriteFrontierRun("eps_b");

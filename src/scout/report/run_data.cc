@@ -229,6 +229,29 @@ std::vector<CoverageSample> ReadCoverageCsv(const std::filesystem::path& path) {
   return samples;
 }
 
+std::vector<NavigationPointRow> ReadNavigationPointsCsv(const std::filesystem::path& path) {
+  CsvReader csv(path, {"rank", "x_m", "y_m", "path_cost_m", "info_gain_m2", "revenue"});
+  const int rank = csv.Column("rank"), x = csv.Column("x_m"), y = csv.Column("y_m"),
+            cost = csv.Column("path_cost_m"), gain = csv.Column("info_gain_m2"),
+            revenue = csv.Column("revenue");
+  std::vector<NavigationPointRow> rows;
+  while (csv.Next()) {
+    NavigationPointRow r;
+    r.rank = static_cast<int>(Count(csv, rank));
+    if (r.rank != static_cast<int>(rows.size()) + 1) {
+      throw InputError(csv.Where() + ": rank '" + std::string(csv.Text(rank)) + "', expected " +
+                       std::to_string(rows.size() + 1) + " (ranks count up from 1)");
+    }
+    r.x_m = csv.Number(x);
+    r.y_m = csv.Number(y);
+    r.path_cost_m = csv.Number(cost);
+    r.info_gain_m2 = csv.Number(gain);
+    r.revenue = csv.Number(revenue);
+    rows.push_back(r);
+  }
+  return rows;
+}
+
 RunData ReadRun(const std::filesystem::path& dir, const std::string& name) {
   if (!std::filesystem::is_directory(dir)) {
     throw InputError("'" + dir.string() + "' is not a directory");
@@ -247,6 +270,9 @@ RunData ReadRun(const std::filesystem::path& dir, const std::string& name) {
   if (has_summary) run.summary = ReadSummary(dir / "summary.json");
   if (has_frontier) run.rounds = ReadFrontierCsv(dir / "frontier.csv");
   if (has_coverage) run.coverage = ReadCoverageCsv(dir / "coverage.csv");
+  if (std::filesystem::exists(dir / "navigation_points.csv")) {
+    run.navigation_points = ReadNavigationPointsCsv(dir / "navigation_points.csv");
+  }
   for (const auto& entry : std::filesystem::directory_iterator(dir)) {
     if (entry.is_regular_file() && entry.path().extension() == ".png") {
       run.pictures.push_back(entry.path());

@@ -30,6 +30,16 @@ struct CoverageSample {
   double coverage = 0.0;  // fraction of the reachable free area, 0..1
 };
 
+// One row of navigation_points.csv (replay): where an explorer would go next
+// from the run's last pose, best first.
+struct NavigationPointRow {
+  int rank = 0;
+  double x_m = 0.0, y_m = 0.0;
+  double path_cost_m = 0.0;
+  double info_gain_m2 = 0.0;
+  double revenue = 0.0;
+};
+
 // What a Scout output directory holds, read back from its files. Each part is
 // empty when its file is absent.
 struct RunData {
@@ -38,6 +48,7 @@ struct RunData {
   nlohmann::json summary;  // null without summary.json
   std::vector<FrontierRound> rounds;
   std::vector<CoverageSample> coverage;
+  std::vector<NavigationPointRow> navigation_points;
   std::vector<std::filesystem::path> pictures;  // *.png, frontiers.png and map.png first
 };
 
@@ -48,6 +59,9 @@ std::vector<FrontierRound> ReadFrontierCsv(const std::filesystem::path& path);
 // Reads coverage.csv (sim_time_s,path_length_m,coverage). Throws like
 // ReadFrontierCsv.
 std::vector<CoverageSample> ReadCoverageCsv(const std::filesystem::path& path);
+
+// Reads navigation_points.csv. Throws like ReadFrontierCsv.
+std::vector<NavigationPointRow> ReadNavigationPointsCsv(const std::filesystem::path& path);
 
 // Returns the first sample whose coverage reached 'fraction' (0-1), or null.
 const CoverageSample* FirstReaching(const std::vector<CoverageSample>& coverage, double fraction);
