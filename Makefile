@@ -37,6 +37,7 @@ test-tsan:
 
 bench: build
 	$(BUILD_DIR)/bench/scout_bench
+	$(BUILD_DIR)/bench/scout_report_bench
 
 # The whole evaluation (hours; resumable): out/results/, docs/RESULTS.md, docs/figures/.
 # RESULTS_ARGS: options of scripts/results, e.g. RESULTS_ARGS="--only 'explore-museum-*'".
