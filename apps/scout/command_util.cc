@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "scout/common/error.h"
+#include "scout/common/input_limits.h"
 #include "scout/sim/make_world.h"
 
 namespace scout::apps {
@@ -140,6 +141,31 @@ void RejectEmptyValues(const CLI::App& command) {
       }
     }
   }
+}
+
+Eigen::Vector2d ParsePoint(const std::string& text, const std::string& option) {
+  std::istringstream in(text);
+  double x = 0.0, y = 0.0;
+  char comma = 0;
+  if (!(in >> x >> comma >> y) || comma != ',' || !(in >> std::ws).eof() ||
+      !(std::abs(x) <= kMaxInputCoordinateM) || !(std::abs(y) <= kMaxInputCoordinateM)) {
+    throw InputError(option + " '" + text + "': expected X,Y in metres, e.g. " + option +
+                     " 2.5,-1");
+  }
+  return {x, y};
+}
+
+std::string NavigationPointsCsv(const std::vector<explore::NavigationPoint>& points) {
+  std::ostringstream csv;
+  csv << "rank,x_m,y_m,path_cost_m,info_gain_m2,revenue,cluster,component_points\n";
+  csv << std::fixed;
+  for (size_t k = 0; k < points.size(); ++k) {
+    const explore::NavigationPoint& p = points[k];
+    csv << k + 1 << "," << std::setprecision(3) << p.position.x() << "," << p.position.y() << ","
+        << p.cost_m << "," << p.info_gain_m2 << "," << p.revenue << "," << p.cluster << ","
+        << p.component_size << "\n";
+  }
+  return csv.str();
 }
 
 }  // namespace scout::apps

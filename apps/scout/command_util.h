@@ -2,12 +2,14 @@
 #define SCOUT_APPS_SCOUT_COMMAND_UTIL_H_
 
 #include <CLI/CLI.hpp>
+#include <Eigen/Core>
 #include <cstdint>
 #include <limits>
 #include <ostream>
 #include <string>
 #include <vector>
 
+#include "scout/explore/navigation_points.h"
 #include "scout/frontier/frontier_engine.h"
 #include "scout/io/config.h"
 #include "scout/sim/world.h"
@@ -39,6 +41,14 @@ std::vector<std::string> SplitList(const std::string& list, const std::string& o
 std::string PictureStrategy(const std::string& requested,
                             const std::vector<std::string>& strategies,
                             const frontier::FrontierEngine& engine);
+
+// Parses "X,Y" in metres given as 'option' ("--start"). Throws InputError
+// naming the option and the expected form otherwise.
+Eigen::Vector2d ParsePoint(const std::string& text, const std::string& option);
+
+// navigation_points.csv: one row per navigation point, best first
+// (rank,x_m,y_m,path_cost_m,info_gain_m2,revenue,cluster,component_points).
+std::string NavigationPointsCsv(const std::vector<explore::NavigationPoint>& points);
 
 // 'value' in fixed notation with 'decimals' decimals, or "-" when it was not
 // measured (not finite): the commands' tables and summary lines print no "nan".

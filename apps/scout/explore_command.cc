@@ -18,7 +18,6 @@
 #include "scout/common/atomic_file.h"
 #include "scout/common/error.h"
 #include "scout/common/format.h"
-#include "scout/common/input_limits.h"
 #include "scout/exploration/exploration_loop.h"
 #include "scout/frontier/stopwatch.h"
 #include "scout/io/carmen_log_writer.h"
@@ -34,18 +33,6 @@
 
 namespace scout::apps {
 namespace {
-
-// Parses "X,Y" (metres, world frame).
-Eigen::Vector2d ParseStart(const std::string& text) {
-  std::istringstream in(text);
-  double x = 0.0, y = 0.0;
-  char comma = 0;
-  if (!(in >> x >> comma >> y) || comma != ',' || !(in >> std::ws).eof() ||
-      !(std::abs(x) <= kMaxInputCoordinateM) || !(std::abs(y) <= kMaxInputCoordinateM)) {
-    throw InputError("--start '" + text + "': expected X,Y in metres, e.g. --start 2.5,-1");
-  }
-  return {x, y};
-}
 
 exploration::ExplorationOptions MakeOptions(const ExploreArgs& args) {
   const io::ScoutConfig config = LoadConfigOrDefaults(args.config_file);
@@ -63,7 +50,7 @@ exploration::ExplorationOptions MakeOptions(const ExploreArgs& args) {
     }
     o.explore.max_sim_time_s = *args.max_sim_time_s;
   }
-  if (args.start) o.start = ParseStart(*args.start);
+  if (args.start) o.start = ParsePoint(*args.start, "--start");
   try {
     exploration::CheckExplorationOptions(o);
   } catch (const InputError& e) {

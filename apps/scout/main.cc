@@ -11,6 +11,7 @@
 #include "apps/scout/compare_command.h"
 #include "apps/scout/explore_command.h"
 #include "apps/scout/frontier_bench_command.h"
+#include "apps/scout/frontiers_command.h"
 #include "apps/scout/interrupt.h"
 #include "apps/scout/replay_command.h"
 #include "apps/scout/report_command.h"
@@ -31,6 +32,8 @@ int main(int argc, char** argv) {
   CLI::App* replay = scout::apps::AddReplayCommand(app, &replay_args);
   scout::apps::ExploreArgs explore_args;
   CLI::App* explore = scout::apps::AddExploreCommand(app, &explore_args);
+  scout::apps::FrontiersArgs frontiers_args;
+  CLI::App* frontiers = scout::apps::AddFrontiersCommand(app, &frontiers_args);
   scout::apps::ResultsTableArgs table_args;
   CLI::App* table = scout::apps::AddResultsTableCommand(app, &table_args);
   try {
@@ -55,6 +58,7 @@ int main(int argc, char** argv) {
     if (compare->parsed()) return scout::apps::RunCompare(compare_args);
     if (replay->parsed()) return scout::apps::RunReplay(replay_args);
     if (explore->parsed()) return scout::apps::RunExplore(explore_args);
+    if (frontiers->parsed()) return scout::apps::RunFrontiers(frontiers_args);
     if (table->parsed()) return scout::apps::RunResultsTable(table_args);
   } catch (const scout::InputError& e) {
     std::cerr << "scout: error: " << e.what() << "\n";

@@ -222,20 +222,6 @@ explore::MapNavigationPoints FinalNavigationPoints(const io::ScoutConfig& config
                                         config.explore.policy.navigation);
 }
 
-// navigation_points.csv: one row per navigation point, best first.
-std::string NavigationPointsCsv(const std::vector<explore::NavigationPoint>& points) {
-  std::ostringstream csv;
-  csv << "rank,x_m,y_m,path_cost_m,info_gain_m2,revenue,cluster,component_points\n";
-  csv << std::fixed;
-  for (size_t k = 0; k < points.size(); ++k) {
-    const explore::NavigationPoint& p = points[k];
-    csv << k + 1 << "," << std::setprecision(3) << p.position.x() << "," << p.position.y() << ","
-        << p.cost_m << "," << p.info_gain_m2 << "," << p.revenue << "," << p.cluster << ","
-        << p.component_size << "\n";
-  }
-  return csv.str();
-}
-
 int RunReplay(const ReplayArgs& args) {
   const frontier::Stopwatch wall;
   io::ScoutConfig config = LoadConfigOrDefaults(args.config_file);
