@@ -33,11 +33,11 @@ inline CliResult RunScout(const std::string& args) {
 
 // Starts scout with 'args' (which must include --out 'out'), sends it SIGINT
 // 'signals' times back to back once 'out' exists (the commands make it after
-// installing their handler; gives up waiting after 30 s), and returns its
-// output and exit code.
+// installing their handler; gives up waiting after 30 s) and 'delay_s' more
+// seconds have passed, and returns its output and exit code.
 inline CliResult RunScoutAndInterrupt(const std::string& args, const std::string& out,
-                                      int signals = 1) {
-  std::string kills;
+                                      int signals = 1, double delay_s = 0.0) {
+  std::string kills = delay_s > 0.0 ? "sleep " + std::to_string(delay_s) + "; " : "";
   for (int i = 0; i < signals; ++i) kills += "kill -INT $pid; ";
   const std::string script =
       "sh -c '" + std::string(SCOUT_BINARY) + " " + args + " & pid=$!; n=0; until [ -d " + out +

@@ -57,8 +57,9 @@ CLI::App* AddFrontiersCommand(CLI::App& app, FrontiersArgs* args) {
       ->required();
   cmd->add_option("--out", args->out_dir, "output directory")->capture_default_str();
   cmd->add_option("--config", args->config_file,
-                  "YAML options file (see config/default.yaml): the explore and robot sections "
-                  "apply");
+                  "YAML options file (see config/default.yaml): explore.traversability, "
+                  "explore.policy.navigation, explore.frontier_inflation_radius_m, "
+                  "explore.boundary (map frame) and robot.radius_m apply");
   cmd->add_flag("--quiet", args->quiet, "print only the summary line");
   return cmd;
 }
@@ -91,7 +92,7 @@ int RunFrontiers(const FrontiersArgs& args) {
       map.cells, map.limits, {robot}, frontier_options.inflation_radius_m);
   const explore::MapNavigationPoints navigation = explore::NavigationPointsOnMap(
       map, frontier.points_m, robot, {}, exploration::PlanningTraversability(options),
-      options.explore.policy.navigation);
+      options.explore.policy.navigation, options.explore.boundary);
   const double time_s = watch.ElapsedUs() * 1e-6;
 
   nlohmann::json summary;
@@ -99,6 +100,7 @@ int RunFrontiers(const FrontiersArgs& args) {
   summary["resolution_m"] = map.limits.resolution();
   summary["robot"] = {robot.x(), robot.y()};
   summary["frontier_points"] = frontier.points_m.size();
+  summary["frontier_points_in_boundary"] = navigation.frontier_points_in_boundary;
   summary["frontier_inflation_radius_m"] = frontier_options.inflation_radius_m;
   summary["navigation_points"] = {
       {"count", navigation.points.size()},

@@ -191,12 +191,14 @@ TEST_F(ReplayCli, NamesTheNavigationPointsOfTheMapItEndsWith) {
 // mapped and written, as with --max-scans, and the exit code says it stopped.
 TEST_F(ReplayCli, AnInterruptedReplayKeepsTheScansSoFar) {
   const fs::path log = Dir() / "long.log";
-  WriteCorridorLog(log, /*zero_times=*/false, /*laps=*/12.0);
+  WriteCorridorLog(log, /*zero_times=*/false, /*laps=*/40.0);
   const fs::path out = Dir() / "interrupted";
+  // Interrupted 0.3 s after the output directory appears: well into the
+  // replay of the 40 laps (over 4,000 scans), not before its first scan.
   const Result r = scout::testing::RunScoutAndInterrupt(
       "replay " + log.string() + " --reference " + log.string() + " --synchronous --quiet --out " +
           out.string(),
-      out.string());
+      out.string(), /*signals=*/1, /*delay_s=*/0.3);
   EXPECT_EQ(r.exit_code, 130) << r.output;
   EXPECT_NE(r.output.find("scout: replay stopped by SIGINT after "), std::string::npos) << r.output;
   std::ifstream in(out / "summary.json");

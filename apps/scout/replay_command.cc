@@ -15,6 +15,7 @@
 #include "scout/common/atomic_file.h"
 #include "scout/common/error.h"
 #include "scout/common/resource_usage.h"
+#include "scout/exploration/exploration_options.h"
 #include "scout/explore/map_navigation_points.h"
 #include "scout/frontier/frontier_engine.h"
 #include "scout/frontier/stopwatch.h"
@@ -200,7 +201,8 @@ CLI::App* AddReplayCommand(CLI::App& app, ReplayArgs* args) {
 
 // Where an explorer would go next from the last pose of the replay: the
 // navigation points of the final map (explore.policy.navigation,
-// explore.traversability with robot.radius_m), as the exploration loop ranks them.
+// explore.traversability with robot.radius_m, explore.boundary in the map
+// frame), as the exploration loop ranks them.
 explore::MapNavigationPoints FinalNavigationPoints(const io::ScoutConfig& config,
                                                    const io::GlobalSubmaps& submaps,
                                                    const std::vector<Eigen::Vector2d>& frontier,
@@ -219,7 +221,7 @@ explore::MapNavigationPoints FinalNavigationPoints(const io::ScoutConfig& config
   explore::TraversabilityOptions traversability = config.explore.traversability;
   traversability.robot_radius_m = config.robot.robot.radius_m;
   return explore::NavigationPointsOnMap(map, frontier, driven.back(), driven, traversability,
-                                        config.explore.policy.navigation);
+                                        config.explore.policy.navigation, config.explore.boundary);
 }
 
 int RunReplay(const ReplayArgs& args) {
@@ -230,6 +232,7 @@ int RunReplay(const ReplayArgs& args) {
   const std::vector<std::string> strategies = SplitList(args.strategies, "--strategies");
   frontier::FrontierEngine engine(config.frontier, strategies, /*evaluate=*/true);
   const std::string picture_strategy = PictureStrategy(args.picture_strategy, strategies, engine);
+  exploration::CheckExplorationBoundary(config.explore.boundary);
 
   io::Dataset dataset = io::LoadDataset(args.dataset, {args.scan_topic, args.odometry_topic});
   PrintWarnings(dataset);
@@ -368,6 +371,7 @@ int RunReplay(const ReplayArgs& args) {
   summary["navigation_points"] = {
       {"strategy", picture_strategy},
       {"frontier_points", frontier.size()},
+      {"frontier_points_in_boundary", navigation.frontier_points_in_boundary},
       {"count", navigation.points.size()},
       {"clusters", navigation.stats.clusters},
       {"components", navigation.stats.components},

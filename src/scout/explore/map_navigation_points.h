@@ -22,17 +22,22 @@ struct MapNavigationPoints {
   bool robot_escaped = false;
   // No traversable cell was found around the robot: every point is unreachable.
   bool robot_boxed_in = false;
+  // Frontier points inside the boundary (all of them without one).
+  int frontier_points_in_boundary = 0;
 };
 
 // 'frontier' are global frontier points in the map frame; 'driven' the robot's
 // positions so far (cells along them stay passable, TraversabilityOptions::
-// driven_width_m), empty for none.
+// driven_width_m), empty for none. With a 'boundary' polygon (map frame, at
+// least three vertices; empty: none), frontier points outside it are left
+// out, as the goal manager leaves them out.
 MapNavigationPoints NavigationPointsOnMap(const grid::OccupancyMap& map,
                                           const std::vector<Eigen::Vector2d>& frontier,
                                           const Eigen::Vector2d& robot,
                                           const std::vector<Eigen::Vector2d>& driven,
                                           const TraversabilityOptions& traversability,
-                                          const NavigationPointOptions& options);
+                                          const NavigationPointOptions& options,
+                                          const std::vector<Eigen::Vector2d>& boundary = {});
 
 }  // namespace scout::explore
 

@@ -49,6 +49,19 @@ TEST(MapNavigationPoints, BothCorridorEndsRankedByPathCostAndTheSealedRoomLeftOu
   EXPECT_GE(result.stats.unreachable_components, 1);
 }
 
+// The exploration boundary keeps the far end out, as the goal manager does.
+TEST(MapNavigationPoints, FrontierOutsideTheBoundaryIsNoGoal) {
+  const MapBuilder b = CorridorWithSealedRoom();
+  const std::vector<Eigen::Vector2d> frontier = b.FrontierPoints();
+  const std::vector<Eigen::Vector2d> boundary = {{0.0, 0.0}, {4.0, 0.0}, {4.0, 2.0}, {0.0, 2.0}};
+  const MapNavigationPoints result =
+      NavigationPointsOnMap(b.map(), frontier, b.At(20, 10), {}, SmallRobot(), {}, boundary);
+  ASSERT_EQ(result.points.size(), 1u);
+  EXPECT_NEAR(result.points[0].position.x(), b.At(10, 0).x(), 1e-9);
+  EXPECT_GT(result.frontier_points_in_boundary, 0);
+  EXPECT_LT(result.frontier_points_in_boundary, static_cast<int>(frontier.size()));
+}
+
 TEST(MapNavigationPoints, RobotAgainstAWallLeavesWhereItsDiscFits) {
   const MapBuilder b = CorridorWithSealedRoom();
   // One cell from the wall: inside the inflated band.
