@@ -168,4 +168,13 @@ std::string NavigationPointsCsv(const std::vector<explore::NavigationPoint>& poi
   return csv.str();
 }
 
+exploration::ExplorationOptions ExplorationOptionsFrom(const io::ScoutConfig& config) {
+  exploration::ExplorationOptions o;
+  o.explore = config.explore;
+  o.robot = config.robot;
+  o.slam = config.slam;
+  o.frontier = config.frontier;
+  return o;
+}
+
 }  // namespace scout::apps

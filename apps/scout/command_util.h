@@ -58,6 +58,10 @@ std::string FixedOrDash(double value, int decimals);
 // recall and total update time.
 void PrintStrategyTable(const frontier::FrontierEngine& engine, std::ostream& out);
 
+// The options of one exploration run from an options file's sections
+// (explore, robot, slam, frontier), before any command-line override.
+exploration::ExplorationOptions ExplorationOptionsFrom(const io::ScoutConfig& config);
+
 // Makes the world of --world and --seed, sized by --world-size when given
 // ("W" or "WxH"); a size the generator cannot use is named as --world-size.
 sim::World MakeCommandWorld(const std::string& world, uint64_t seed, const std::string& world_size);

@@ -35,12 +35,8 @@ namespace scout::apps {
 namespace {
 
 exploration::ExplorationOptions MakeOptions(const ExploreArgs& args) {
-  const io::ScoutConfig config = LoadConfigOrDefaults(args.config_file);
-  exploration::ExplorationOptions o;
-  o.explore = config.explore;
-  o.robot = config.robot;
-  o.slam = config.slam;
-  o.frontier = config.frontier;
+  exploration::ExplorationOptions o =
+      ExplorationOptionsFrom(LoadConfigOrDefaults(args.config_file));
   o.explore.strategy = args.strategy;
   o.explore.goal_policy = args.goals;
   if (args.max_sim_time_s) {

@@ -65,12 +65,8 @@ CLI::App* AddFrontiersCommand(CLI::App& app, FrontiersArgs* args) {
 }
 
 int RunFrontiers(const FrontiersArgs& args) {
-  const io::ScoutConfig config = LoadConfigOrDefaults(args.config_file);
-  exploration::ExplorationOptions options;
-  options.explore = config.explore;
-  options.robot = config.robot;
-  options.slam = config.slam;
-  options.frontier = config.frontier;
+  const exploration::ExplorationOptions options =
+      ExplorationOptionsFrom(LoadConfigOrDefaults(args.config_file));
   exploration::CheckExplorationOptions(options);
   const Eigen::Vector2d robot = ParsePoint(args.robot, "--robot");
   const grid::OccupancyMap map = grid::ReadMapServerMap(args.map);

@@ -19,7 +19,6 @@
 #include "scout/explore/map_navigation_points.h"
 #include "scout/frontier/frontier_engine.h"
 #include "scout/frontier/stopwatch.h"
-#include "scout/grid/submap_fusion.h"
 #include "scout/io/config.h"
 #include "scout/io/dataset.h"
 #include "scout/io/frontier_report.h"
@@ -207,21 +206,13 @@ explore::MapNavigationPoints FinalNavigationPoints(const io::ScoutConfig& config
                                                    const io::GlobalSubmaps& submaps,
                                                    const std::vector<Eigen::Vector2d>& frontier,
                                                    const std::vector<slam::TimedPose>& nodes) {
-  std::vector<grid::PlacedGrid> placed;
-  double resolution_m = 0.0;
-  for (const auto& [pose, grid] : submaps) {
-    placed.push_back({grid.get(), pose});
-    const double r = grid->limits().resolution();
-    resolution_m = resolution_m == 0.0 ? r : std::min(resolution_m, r);
-  }
-  const grid::OccupancyMap map = grid::FuseSubmaps(placed, resolution_m);
   std::vector<Eigen::Vector2d> driven;
   driven.reserve(nodes.size());
   for (const slam::TimedPose& n : nodes) driven.push_back(n.pose.translation());
-  explore::TraversabilityOptions traversability = config.explore.traversability;
-  traversability.robot_radius_m = config.robot.robot.radius_m;
-  return explore::NavigationPointsOnMap(map, frontier, driven.back(), driven, traversability,
-                                        config.explore.policy.navigation, config.explore.boundary);
+  return explore::NavigationPointsOnMap(
+      io::FuseGlobalSubmaps(submaps), frontier, driven.back(), driven,
+      exploration::PlanningTraversability(ExplorationOptionsFrom(config)),
+      config.explore.policy.navigation, config.explore.boundary);
 }
 
 int RunReplay(const ReplayArgs& args) {

@@ -311,10 +311,14 @@ void WriteCoveragePicture(const grid::OccupancyMap& world,
   grid::WriteImage(canvas.image(), path);
 }
 
-void WriteMapServerMap(const GlobalSubmaps& submaps, const std::filesystem::path& yaml_path) {
+grid::OccupancyMap FuseGlobalSubmaps(const GlobalSubmaps& submaps) {
   const std::vector<grid::PlacedGrid> placed = Placed(submaps);
-  const double resolution = FinestResolution(placed);
-  grid::OccupancyMap fused = grid::FuseSubmaps(placed, resolution);
+  return grid::FuseSubmaps(placed, FinestResolution(placed));
+}
+
+void WriteMapServerMap(const GlobalSubmaps& submaps, const std::filesystem::path& yaml_path) {
+  grid::OccupancyMap fused = FuseGlobalSubmaps(submaps);
+  const double resolution = FinestResolution(Placed(submaps));
   if (fused.limits.num_cells() == 0) {
     // Nothing mapped yet (a run stopped before its first scan saw anything):
     // a map_server map has at least one cell, so the map is one unknown cell

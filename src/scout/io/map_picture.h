@@ -66,6 +66,11 @@ void WriteCoveragePicture(const grid::OccupancyMap& world,
                           const std::vector<StampedPose>& truth, const std::filesystem::path& path,
                           int max_side_px = 3000);
 
+// Returns the submaps fused by grid::FuseSubmaps at the finest submap
+// resolution (0.05 m without submaps): the map WriteMapServerMap writes; no
+// cells when nothing is mapped.
+grid::OccupancyMap FuseGlobalSubmaps(const GlobalSubmaps& submaps);
+
 // Writes the fused submaps at the finest submap resolution as a ROS
 // map_server map ('yaml_path' plus a PGM beside it, see grid/map_io.h); with
 // nothing mapped yet, one unknown cell at the origin. Throws InputError when
