@@ -107,7 +107,57 @@ TEST_F(ExploreCli, BadInputsNameWhatIsWrongAndLeaveNoOutputs) {
   r = RunScout("explore --start 2,2.5 --config " + (dir_ / "away.yaml").string() + rooms + o);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find("explore.boundary: the start"), std::string::npos) << r.output;
+  r = RunScout("explore --status " + (dir_ / "nowhere" / "status.json").string() + rooms + o);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("--status " + (dir_ / "nowhere" / "status.json").string() +
+                          ": directory " + (dir_ / "nowhere").string() + " does not exist"),
+            std::string::npos)
+      << r.output;
+  r = RunScout("explore --status " + dir_.string() + rooms + o);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("expected a file name, not a directory"), std::string::npos) << r.output;
   EXPECT_FALSE(fs::exists(out));
+}
+
+TEST_F(ExploreCli, KeepsALiveStatusFileWhileItRuns) {
+  // A monitor reads the status while the run goes on; it always finds a whole
+  // JSON object (rename into place). Copied once the simulated robot moves,
+  // then the run is interrupted and the status says how it ended.
+  const fs::path out = dir_ / "live";
+  const fs::path status = dir_ / "status.json";
+  const fs::path seen = dir_ / "status-seen.json";
+  const Result r = scout::testing::RunShell(
+      "sh -c '" + std::string(SCOUT_BINARY) + " explore --world office --quiet --out " +
+      out.string() + " --status " + status.string() + " & pid=$!; n=0; until grep -q " +
+      "-E sim_time_s.:.[1-9] " + status.string() + " 2>/dev/null || [ $n -ge 300 ]; do " +
+      "sleep 0.1; n=$((n+1)); done; cp " + status.string() + " " + seen.string() +
+      "; kill -INT $pid; wait $pid; echo exit=$?'");
+  ASSERT_NE(r.output.find("exit=130"), std::string::npos) << r.output;
+  std::ifstream seen_in(seen);
+  const nlohmann::json live = nlohmann::json::parse(seen_in, nullptr, /*allow_exceptions=*/false);
+  ASSERT_TRUE(live.is_object()) << r.output;
+  EXPECT_EQ(live["command"], "explore");
+  EXPECT_EQ(live["world"], "office");
+  EXPECT_EQ(live["out"], out.string());
+  EXPECT_EQ(live["running"], true);
+  EXPECT_TRUE(live["terminated"].is_null());
+  EXPECT_TRUE(live["summary"].is_null());
+  EXPECT_GE(live["sim_time_s"].get<double>(), 1.0);
+  EXPECT_TRUE(live["pose"]["x_m"].is_number());
+  EXPECT_TRUE(live["goals"]["issued"].is_number());
+
+  std::ifstream final_in(status);
+  const nlohmann::json last = nlohmann::json::parse(final_in, nullptr, /*allow_exceptions=*/false);
+  ASSERT_TRUE(last.is_object()) << r.output;
+  EXPECT_EQ(last["running"], false);
+  EXPECT_EQ(last["terminated"], "interrupted");
+  EXPECT_EQ(last["state"], "ended");
+  EXPECT_EQ(last["summary"], (out / "summary.json").string());
+  EXPECT_GE(last["sim_time_s"].get<double>(), live["sim_time_s"].get<double>());
+  std::ifstream summary_in(out / "summary.json");
+  const nlohmann::json summary = nlohmann::json::parse(summary_in);
+  EXPECT_EQ(last["coverage"], summary["coverage"]);
+  EXPECT_EQ(last["sim_time_s"], summary["sim_time_s"]);
 }
 
 TEST_F(ExploreCli, AnInterruptedRunKeepsTheRunSoFar) {
@@ -140,8 +190,9 @@ TEST_F(ExploreCli, AnInterruptedRunKeepsTheRunSoFar) {
 
 TEST_F(ExploreCli, ExploresASmallMapAndWritesEveryOutput) {
   const fs::path out = dir_ / "out";
+  const fs::path status_path = dir_ / "status.json";
   const Result r = RunScout("explore --quiet --seed 2 --world " + (dir_ / "rooms.yaml").string() +
-                            " --out " + out.string());
+                            " --out " + out.string() + " --status " + status_path.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   for (const char* name :
        {"map.yaml", "map.pgm", "map.png", "coverage.png", "trajectory.tum", "truth.tum",
@@ -189,6 +240,25 @@ TEST_F(ExploreCli, ExploresASmallMapAndWritesEveryOutput) {
   std::string header;
   std::getline(csv, header);
   EXPECT_EQ(header, "sim_time_s,path_length_m,coverage,map_free_m2");
+  // The last status is the summary's run, with the robot where it ended.
+  std::ifstream status_in(status_path);
+  const nlohmann::json status = nlohmann::json::parse(status_in);
+  EXPECT_EQ(status["running"], false);
+  EXPECT_EQ(status["terminated"], "complete");
+  EXPECT_EQ(status["world"], "rooms");
+  EXPECT_EQ(status["seed"], 2);
+  EXPECT_EQ(status["summary"], (out / "summary.json").string());
+  EXPECT_EQ(status["coverage"], s["coverage"]);
+  EXPECT_EQ(status["path_length_m"], s["path_length_m"]);
+  EXPECT_EQ(status["collisions"], 0);
+  EXPECT_EQ(status["goals"]["issued"], s["goals"]["issued"]);
+  EXPECT_EQ(status["goals"]["reached"], s["goals"]["reached"]);
+  EXPECT_EQ(status["frontier_points"], 0);  // explored completely
+  const Eigen::Vector2d estimated(status["pose"]["x_m"].get<double>(),
+                                  status["pose"]["y_m"].get<double>());
+  const Eigen::Vector2d truth(status["true_pose"]["x_m"].get<double>(),
+                              status["true_pose"]["y_m"].get<double>());
+  EXPECT_LT((estimated - truth).norm(), 0.2);
 }
 
 TEST_F(ExploreCli, RecordsItsSensorStreamForReplayAgainstTheTruePoses) {

@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "apps/scout/command_util.h"
+#include "apps/scout/explore_status.h"
 #include "apps/scout/interrupt.h"
 #include "apps/scout/report_command.h"
 #include "scout/common/atomic_file.h"
@@ -277,6 +278,9 @@ CLI::App* AddExploreCommand(CLI::App& app, ExploreArgs* args) {
   cmd->add_flag("--record-log", args->record_log,
                 "also write sensor.log: every scan with its true and odometry pose as a CARMEN "
                 "log, to re-run SLAM on it with `scout replay sensor.log --reference sensor.log`");
+  cmd->add_option("--status", args->status_file,
+                  "keep a JSON status of the running exploration in this file (state, poses, "
+                  "goal, coverage, counters), rewritten atomically every 5 s of simulated time");
   return cmd;
 }
 
@@ -284,6 +288,7 @@ int RunExplore(const ExploreArgs& args) {
   const frontier::Stopwatch wall;
   // Everything that can be wrong with the input is found before any output.
   const exploration::ExplorationOptions options = MakeOptions(args);
+  if (args.status_file) ExploreStatusFile::CheckPath(*args.status_file);
   const sim::World world = MakeCommandWorld(args.world, args.seed, args.world_size);
   std::unique_ptr<exploration::ExplorationLoop> loop_owner;
   try {
@@ -311,15 +316,34 @@ int RunExplore(const ExploreArgs& args) {
     });
   }
 
+  std::optional<ExploreStatusFile> status;
+  if (args.status_file) {
+    status.emplace(*args.status_file,
+                   nlohmann::ordered_json{{"command", "explore"},
+                                          {"world", world.name},
+                                          {"seed", args.seed},
+                                          {"strategy", options.explore.strategy},
+                                          {"goals_policy", options.explore.goal_policy},
+                                          {"out", out.path().string()}});
+  }
+
   const bool terminal = !args.quiet && ::isatty(STDERR_FILENO);
+  // A terminal's progress line and the status file are refreshed every 5 s
+  // of simulated time; plain progress lines (a log) come every 60 s.
+  constexpr double kLineEvery_s = 60.0;
+  double next_line_s = 0.0;
   exploration::ExplorationLoop::ProgressCallback progress;
-  if (!args.quiet) {
-    progress = [terminal](const exploration::ExplorationProgress& p) {
+  if (!args.quiet || status) {
+    progress = [&](const exploration::ExplorationProgress& p) {
+      if (status) status->Update(p, wall.ElapsedUs() * 1e-6);
+      if (args.quiet) return;
+      if (!terminal && !p.finished && p.sim_time_s < next_line_s) return;
+      next_line_s = p.sim_time_s + kLineEvery_s;
       PrintProgress(p, terminal);
     };
   }
-  const exploration::ExplorationResult result =
-      loop.Run(progress, terminal ? 5.0 : 60.0, [] { return PendingSignal() != 0; });
+  const exploration::ExplorationResult result = loop.Run(
+      progress, terminal || status ? 5.0 : kLineEvery_s, [] { return PendingSignal() != 0; });
   if (terminal) std::cerr << "\n";
   const double wall_time_s = wall.ElapsedUs() * 1e-6;
 
@@ -363,6 +387,7 @@ int RunExplore(const ExploreArgs& args) {
   StageRunReport(summary_path.parent_path(), out);
   if (log) log->Close();
   out.Commit();
+  if (status) status->Finish(result.terminated, out.path() / "summary.json");
 
   std::cout << std::fixed << std::setprecision(3) << "explore: " << world.name << " seed "
             << args.seed << ": " << summary["terminated"].get<std::string>() << ", coverage "

@@ -19,7 +19,8 @@ struct ExploreArgs {
   std::optional<double> max_sim_time_s;
   std::optional<std::string> start;  // "X,Y"; absent: the world's own start
   bool quiet = false;
-  bool record_log = false;  // also write sensor.log (CARMEN) for `scout replay`
+  bool record_log = false;                 // also write sensor.log (CARMEN) for `scout replay`
+  std::optional<std::string> status_file;  // --status: live status JSON (ExploreStatusFile)
 };
 
 // Registers `scout explore` on 'app'.

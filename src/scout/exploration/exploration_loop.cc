@@ -361,6 +361,23 @@ std::optional<Termination> ExplorationLoop::CheckTermination(
   return std::nullopt;
 }
 
+ExplorationProgress ExplorationLoop::MakeProgress(double sim_time_s,
+                                                  const explore::ExploreStatus& status) const {
+  ExplorationProgress p;
+  p.sim_time_s = sim_time_s;
+  p.coverage = result_.coverage;
+  p.state = goals_.state();
+  p.counters = goals_.counters();
+  p.path_length_m = robot_.path_length_m();
+  p.collisions = robot_.collisions();
+  p.estimated_pose = world_from_map_ * EstimatedPose();
+  p.true_pose = robot_.true_pose();
+  if (status.goal) p.goal = world_from_map_ * *status.goal;
+  p.frontier_points = static_cast<int>(frontier_.size());
+  p.navigation_points = static_cast<int>(status.candidates.size());
+  return p;
+}
+
 ExplorationResult ExplorationLoop::Run(const ProgressCallback& progress, double progress_interval_s,
                                        const std::function<bool()>& stop_requested) {
   const ExploreOptions& e = options_.explore;
@@ -370,6 +387,7 @@ ExplorationResult ExplorationLoop::Run(const ProgressCallback& progress, double 
   double turned_rad = 0.0;
   double last_heading_rad = EstimatedPose().theta();
   bool started = false;
+  explore::ExploreStatus final_status;
   while (true) {
     const double t = robot_.sim_time_s();
     bool changed = MaybeUpdateMap(/*force=*/fused_map_.limits.num_cells() == 0);
@@ -424,7 +442,7 @@ ExplorationResult ExplorationLoop::Run(const ProgressCallback& progress, double 
       next_sample_s += e.coverage_interval_s;
     }
     if (progress && t >= next_progress_s) {
-      progress({t, result_.coverage, goals_.state(), goals_.counters()});
+      progress(MakeProgress(t, status));
       next_progress_s += progress_interval_s;
     }
     std::optional<Termination> end = CheckTermination(status);
@@ -439,6 +457,7 @@ ExplorationResult ExplorationLoop::Run(const ProgressCallback& progress, double 
           MapPointsInWorld(status.reachable_frontier_left_points);
       result_.visited_frontier_left = status.visited_frontier_left;
       result_.last_candidates_map = status.candidates;
+      final_status = std::move(status);
       break;
     }
     const frontier::Stopwatch watch;
@@ -464,7 +483,11 @@ ExplorationResult ExplorationLoop::Run(const ProgressCallback& progress, double 
   result_.path_length_m = robot_.path_length_m();
   result_.collisions = robot_.collisions();
   result_.counters = goals_.counters();
-  if (progress) progress({t, result_.coverage, goals_.state(), goals_.counters()});
+  if (progress) {
+    ExplorationProgress last = MakeProgress(t, final_status);
+    last.finished = true;
+    progress(last);
+  }
   return std::move(result_);
 }
 

@@ -75,11 +75,24 @@ struct IssuedGoal {
 
 inline constexpr int kMaxUnreachableSnapshots = 3;
 
+// What a running exploration reports (poses and points in the world frame,
+// where the truth and the outputs are).
 struct ExplorationProgress {
   double sim_time_s = 0.0;
   double coverage = 0.0;
   explore::ExploreState state = explore::ExploreState::kIdle;
   explore::ExploreCounters counters;
+  double path_length_m = 0.0;
+  int collisions = 0;
+  geometry::Rigid2d estimated_pose;  // SLAM's
+  geometry::Rigid2d true_pose;       // the simulator's
+  std::optional<Eigen::Vector2d> goal;
+  // Global frontier points of the latest fused map, and the navigation
+  // points of the latest goal selection.
+  int frontier_points = 0;
+  int navigation_points = 0;
+  // The last report of a run: SLAM finished and the final map measured.
+  bool finished = false;
 };
 
 // Wall time spent in each part of the loop, seconds (SLAM excludes the
@@ -189,6 +202,7 @@ class ExplorationLoop {
   std::vector<uint8_t> CoverageMask() const;
 
  private:
+  ExplorationProgress MakeProgress(double sim_time_s, const explore::ExploreStatus& status) const;
   // Feeds due sensor readings to SLAM and keeps the pose estimate current.
   void FeedSensors();
   void FeedSensorsUntimed();
