@@ -35,12 +35,12 @@ class ExploreStatusFile {
   // The run's outputs are written: the last progress with its termination.
   void Finish(exploration::Termination terminated, const std::filesystem::path& summary);
 
-  // The JSON of one status (exposed for tests).
+ private:
+  // One status: 'run', then "running": true and the progress (none yet:
+  // "state": "starting").
   static nlohmann::ordered_json ToJson(
       const nlohmann::ordered_json& run,
       const std::optional<exploration::ExplorationProgress>& progress, double wall_time_s);
-
- private:
   void Write(const nlohmann::ordered_json& status) const;
 
   std::filesystem::path path_;
