@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdint>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -331,14 +332,17 @@ int RunExplore(const ExploreArgs& args) {
   // A terminal's progress line and the status file are refreshed every 5 s
   // of simulated time; plain progress lines (a log) come every 60 s.
   constexpr double kLineEvery_s = 60.0;
-  double next_line_s = 0.0;
+  // Lines on the 60 s grid; the loop's clock sums steps, so a report due at
+  // 120 s may come a hair before it.
+  int64_t last_line = -1;
   exploration::ExplorationLoop::ProgressCallback progress;
   if (!args.quiet || status) {
     progress = [&](const exploration::ExplorationProgress& p) {
       if (status) status->Update(p, wall.ElapsedUs() * 1e-6);
       if (args.quiet) return;
-      if (!terminal && !p.finished && p.sim_time_s < next_line_s) return;
-      next_line_s = p.sim_time_s + kLineEvery_s;
+      const auto line = static_cast<int64_t>(std::floor(p.sim_time_s / kLineEvery_s + 1e-6));
+      if (!terminal && !p.finished && line <= last_line) return;
+      last_line = line;
       PrintProgress(p, terminal);
     };
   }
