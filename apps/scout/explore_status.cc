@@ -1,6 +1,5 @@
 #include "apps/scout/explore_status.h"
 
-#include <cmath>
 #include <exception>
 #include <numbers>
 #include <system_error>
