@@ -246,6 +246,15 @@ TEST_F(ExploreCli, ExploresASmallMapAndWritesEveryOutput) {
   // One place per reachable frontier point left.
   EXPECT_EQ(s["reachable_frontier_left_places"].size(),
             s["goals"]["reachable_frontier_left"].get<size_t>());
+  // Every failure is counted at one failed-goal place.
+  int failures = 0;
+  int blacklisted = 0;
+  for (const nlohmann::json& g : s["failed_goal_places"]) {
+    EXPECT_EQ(g["goal_map"].size(), 2u);
+    failures += g["failures"].get<int>();
+    blacklisted += g["blacklisted"].get<bool>();
+  }
+  EXPECT_EQ(failures, s["goals"]["failed"].get<int>() + s["goals"]["no_plan"].get<int>());
   EXPECT_GT(s["goals"]["issued"].get<int>(), 0);
   EXPECT_LT(s["ate_rmse_m"].get<double>(), 0.1);
   EXPECT_GT(s["sim_time_s"].get<double>(), s["wall_time_s"].get<double>());
@@ -270,6 +279,7 @@ TEST_F(ExploreCli, ExploresASmallMapAndWritesEveryOutput) {
   EXPECT_EQ(status["goals"]["issued"], s["goals"]["issued"]);
   EXPECT_EQ(status["goals"]["reached"], s["goals"]["reached"]);
   EXPECT_EQ(status["frontier_points"], 0);  // explored completely
+  EXPECT_EQ(status["blacklisted_goals"].size(), static_cast<size_t>(blacklisted));
   const Eigen::Vector2d estimated(status["pose"]["x_m"].get<double>(),
                                   status["pose"]["y_m"].get<double>());
   const Eigen::Vector2d truth(status["true_pose"]["x_m"].get<double>(),

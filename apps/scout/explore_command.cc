@@ -107,6 +107,9 @@ io::MapOverlay ExplorationOverlay(const exploration::ExplorationLoop& loop,
     overlay.candidates.push_back(world_from_map * p);
   }
   overlay.boundary = loop.options().explore.boundary;  // already in the world frame
+  for (const exploration::ExplorationResult::FailedGoal& g : r.failed_goals) {
+    if (g.blacklisted) overlay.blacklisted_goals.push_back(world_from_map * g.goal_map);
+  }
   return overlay;
 }
 
@@ -194,6 +197,17 @@ nlohmann::json Summary(const ExploreArgs& args, const exploration::ExplorationLo
                            {"robot_map", {robot_map.x(), robot_map.y()}}});
   }
   s["unreachable_goals"] = unreachable;
+  // Where goals failed (not reached in time, or no plan led to them), as the
+  // final map has them, how often, and whether they were still blacklisted
+  // at the end (map.png crosses those out).
+  nlohmann::json failed = nlohmann::json::array();
+  for (const exploration::ExplorationResult::FailedGoal& g : r.failed_goals) {
+    const Eigen::Vector2d goal_map = world_from_map * g.goal_map;
+    failed.push_back({{"goal_map", {goal_map.x(), goal_map.y()}},
+                      {"failures", g.failures},
+                      {"blacklisted", g.blacklisted}});
+  }
+  s["failed_goal_places"] = failed;
   // Frontier the policy gave up on (ended no_progress with it left): where.
   nlohmann::json gave_up = nlohmann::json::array();
   for (const Eigen::Vector2d& p : r.reachable_frontier_left_world)

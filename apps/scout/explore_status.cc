@@ -1,5 +1,6 @@
 #include "apps/scout/explore_status.h"
 
+#include <Eigen/Core>
 #include <exception>
 #include <numbers>
 #include <system_error>
@@ -14,6 +15,10 @@ namespace {
 nlohmann::ordered_json PoseJson(const geometry::Rigid2d& pose) {
   return {
       {"x_m", pose.x()}, {"y_m", pose.y()}, {"theta_deg", pose.theta() * 180.0 / std::numbers::pi}};
+}
+
+nlohmann::ordered_json PointJson(const Eigen::Vector2d& p) {
+  return {{"x_m", p.x()}, {"y_m", p.y()}};
 }
 
 }  // namespace
@@ -86,8 +91,7 @@ nlohmann::ordered_json ExploreStatusFile::ToJson(
   status["collisions"] = p.collisions;
   status["pose"] = PoseJson(p.estimated_pose);
   status["true_pose"] = PoseJson(p.true_pose);
-  status["goal"] = p.goal ? nlohmann::ordered_json{{"x_m", p.goal->x()}, {"y_m", p.goal->y()}}
-                          : nlohmann::ordered_json(nullptr);
+  status["goal"] = p.goal ? PointJson(*p.goal) : nlohmann::ordered_json(nullptr);
   status["frontier_points"] = p.frontier_points;
   status["navigation_points"] = p.navigation_points;
   status["goals"] = {{"issued", p.counters.goals_issued},
@@ -95,6 +99,9 @@ nlohmann::ordered_json ExploreStatusFile::ToJson(
                      {"failed", p.counters.goals_failed},
                      {"no_plan", p.counters.goals_unreachable},
                      {"superseded", p.counters.goals_superseded}};
+  nlohmann::ordered_json blacklisted = nlohmann::ordered_json::array();
+  for (const Eigen::Vector2d& b : p.blacklisted_goals) blacklisted.push_back(PointJson(b));
+  status["blacklisted_goals"] = blacklisted;
   return status;
 }
 

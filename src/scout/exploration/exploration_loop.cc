@@ -375,6 +375,9 @@ ExplorationProgress ExplorationLoop::MakeProgress(double sim_time_s,
   if (status.goal) p.goal = world_from_map_ * *status.goal;
   p.frontier_points = static_cast<int>(frontier_.size());
   p.navigation_points = static_cast<int>(status.candidates.size());
+  for (const Eigen::Vector2d& b : status.blacklisted) {
+    p.blacklisted_goals.push_back(world_from_map_ * b);
+  }
   return p;
 }
 
@@ -483,6 +486,10 @@ ExplorationResult ExplorationLoop::Run(const ProgressCallback& progress, double 
   result_.path_length_m = robot_.path_length_m();
   result_.collisions = robot_.collisions();
   result_.counters = goals_.counters();
+  for (const explore::FailedGoal& g : goals_.failed_goals().goals()) {
+    result_.failed_goals.push_back(
+        {explore::Resolve(g.where, submap_poses_), g.failures, g.blacklisted});
+  }
   if (progress) {
     ExplorationProgress last = MakeProgress(t, final_status);
     last.finished = true;

@@ -91,6 +91,9 @@ struct ExplorationProgress {
   // points of the latest goal selection.
   int frontier_points = 0;
   int navigation_points = 0;
+  // Goals the robot will not be sent to (near) while the map around them
+  // stays as it is: failed, or no plan led to them.
+  std::vector<Eigen::Vector2d> blacklisted_goals;
   // The last report of a run: SLAM finished and the final map measured.
   bool finished = false;
 };
@@ -143,6 +146,16 @@ struct ExplorationResult {
   // The navigation points of the goal policy's latest selection, best first,
   // map frame (none when it finished because none was left).
   std::vector<Eigen::Vector2d> last_candidates_map;
+  // Every place a goal failed at (not reached in time, or no plan led to
+  // it), where the final submap poses put it (map frame), how often it
+  // failed, and whether it was still blacklisted at the end (false: the map
+  // around it changed and it was free to be chosen again).
+  struct FailedGoal {
+    Eigen::Vector2d goal_map = Eigen::Vector2d::Zero();
+    int failures = 0;
+    bool blacklisted = true;
+  };
+  std::vector<FailedGoal> failed_goals;
   // Where each collision began (true position, world frame) and when.
   struct Collision {
     double sim_time_s = 0.0;

@@ -169,6 +169,38 @@ TEST(ExplorationLoopTest, ABoundaryKeepsTheRobotToItsAreaAndCoverageToIt) {
   }
 }
 
+TEST(ExplorationLoopTest, ReportsWhereGoalsFailedAsTheFinalMapHasThem) {
+  // No goal can shrink its path by 100 m within 2 s: every goal fails.
+  ExplorationOptions o;
+  o.explore.goals.progress_timeout_s = 2.0;
+  o.explore.goals.progress_min_m = 100.0;
+  o.explore.max_sim_time_s = 40.0;
+  ExplorationLoop loop(testing::SmallBuilding(), o, 7);
+  std::vector<Eigen::Vector2d> blacklisted_seen;
+  const ExplorationResult r = loop.Run(
+      [&](const ExplorationProgress& p) {
+        blacklisted_seen.insert(blacklisted_seen.end(), p.blacklisted_goals.begin(),
+                                p.blacklisted_goals.end());
+      },
+      1.0);
+  ASSERT_GT(r.counters.goals_failed, 0);
+  EXPECT_FALSE(blacklisted_seen.empty());  // the progress reports list them
+  int failures = 0;
+  for (const ExplorationResult::FailedGoal& g : r.failed_goals) {
+    EXPECT_GE(g.failures, 1);
+    failures += g.failures;
+    // Each lies where a goal was issued (the failures are issued goals that
+    // made no progress), and so inside the 9 m x 6.3 m building.
+    double nearest_m = 1e9;
+    for (const IssuedGoal& issued : r.goals) {
+      nearest_m = std::min(nearest_m, (issued.goal_map - g.goal_map).norm());
+    }
+    EXPECT_LT(nearest_m, 0.6) << g.goal_map.transpose();
+  }
+  // One failure per failed goal and per candidate no plan led to.
+  EXPECT_EQ(failures, r.counters.goals_failed + r.counters.goals_unreachable);
+}
+
 TEST(ExplorationLoopTest, BadOptionsAndStartsAreInputErrors) {
   ExplorationOptions o;
   o.explore.frontier_inflation_radius_m = 0.2;  // below the planner's 0.25 in narrow passages

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <stdexcept>
+#include <utility>
 
 #include "scout/common/error.h"
 #include "scout/geometry/box.h"
@@ -35,6 +36,8 @@ constexpr Rgb kFrontierColour = {20, 60, 230};
 constexpr Rgb kNavigationPointColour = {0, 110, 40};
 constexpr Rgb kCandidateColour = {200, 0, 200};
 constexpr Rgb kBoundaryColour = {240, 120, 0};
+constexpr Rgb kBlacklistedColour = {150, 0, 0};
+constexpr Rgb kCrossOutline = {255, 255, 255};
 
 std::vector<grid::PlacedGrid> Placed(const GlobalSubmaps& submaps) {
   std::vector<grid::PlacedGrid> placed;
@@ -215,6 +218,21 @@ void DrawCandidates(const MapOverlay& overlay, Canvas& canvas) {
   }
 }
 
+// A cross as large as a candidate disc, so both stay visible on a large map.
+void DrawBlacklistedGoals(const MapOverlay& overlay, Canvas& canvas) {
+  const int arm = std::max(3, std::max(canvas.limits().width(), canvas.limits().height()) / 130);
+  const int width = arm >= 6 ? 1 : 0;
+  for (const Eigen::Vector2d& p : overlay.blacklisted_goals) {
+    const grid::CellIndex c = canvas.limits().CellContaining(p);
+    // Both outlines first, so the second stroke's outline does not cut the first.
+    for (const auto& [rgb, radius] :
+         {std::pair{kCrossOutline, width + 1}, std::pair{kBlacklistedColour, width}}) {
+      canvas.Line({c.x - arm, c.y - arm}, {c.x + arm, c.y + arm}, radius, rgb);
+      canvas.Line({c.x - arm, c.y + arm}, {c.x + arm, c.y - arm}, radius, rgb);
+    }
+  }
+}
+
 }  // namespace
 
 void WriteMapPicture(const GlobalSubmaps& submaps, const std::vector<StampedPose>& trajectory,
@@ -266,6 +284,7 @@ void WriteMapPicture(const GlobalSubmaps& submaps, const std::vector<StampedPose
   DrawOverlayUnderTrajectory(overlay, canvas);
   DrawTrajectory(trajectory, canvas);
   DrawCandidates(overlay, canvas);
+  DrawBlacklistedGoals(overlay, canvas);
   grid::WriteImage(canvas.image(), path);
 }
 

@@ -43,10 +43,13 @@ struct MapOverlay {
   std::vector<Eigen::Vector2d> candidates;
   // The exploration boundary polygon (closed; empty: none): an orange line.
   std::vector<Eigen::Vector2d> boundary;
+  // Blacklisted goals (failed, not to be chosen again unless the map around
+  // them changes): dark red crosses outlined in white, over the trajectory.
+  std::vector<Eigen::Vector2d> blacklisted_goals;
 };
 
 // WriteMapPicture with 'overlay' drawn under the trajectory (the candidates
-// over it).
+// and blacklisted goals over it).
 void WriteMapPicture(const GlobalSubmaps& submaps, const std::vector<StampedPose>& trajectory,
                      const MapOverlay& overlay, const std::filesystem::path& path,
                      int max_side_px = 3000);

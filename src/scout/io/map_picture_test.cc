@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <utility>
+
 #include "scout/common/error.h"
 #include "scout/grid/image.h"
 #include "scout/grid/map_io.h"
@@ -101,6 +103,22 @@ TEST(WriteMapPicture, DrawsTheExplorationOverlay) {
   EXPECT_GT(candidate[0], 150);  // magenta
   EXPECT_GT(candidate[2], 150);
   EXPECT_LT(candidate[1], 50);
+  // Without an overlay the same map has no colour at all (checked below).
+  // A blacklisted goal on the wall (cell 40, 32): a dark red cross of arms 3
+  // cells long, outlined in white over the unknown grey beside the wall.
+  overlay = MapOverlay{};
+  overlay.blacklisted_goals = {{6.06, 6.06}};
+  WriteMapPicture(submaps, {}, overlay, path);
+  const grid::Image crossed = grid::ReadImage(path);
+  const auto cell = [&](int x, int y) { return crossed.at(x, 47 - y); };
+  for (const auto& [x, y] : {std::pair{40, 32}, {42, 34}, {43, 29}, {37, 35}}) {
+    EXPECT_EQ(cell(x, y)[0], 150) << x << "," << y;
+    EXPECT_EQ(cell(x, y)[1], 0) << x << "," << y;
+  }
+  EXPECT_EQ(cell(41, 32)[0], 255);  // the outline between the arms
+  EXPECT_EQ(cell(41, 32)[2], 255);
+  EXPECT_EQ(cell(45, 32)[0], 205);  // beyond the cross: unknown
+  EXPECT_EQ(cell(40, 20)[0], 0);    // the wall away from it
   // Without an overlay the same map has no colour at all.
   WriteMapPicture(submaps, {}, path);
   const grid::Image bare = grid::ReadImage(path);
