@@ -215,7 +215,21 @@ TEST_F(ReplayCli, AnInterruptedReplayKeepsTheScansSoFar) {
   }
   EXPECT_LE(s["slam"]["nodes"].get<int>(), scans);
   EXPECT_EQ(s["reference"]["matched_scans"].get<int>(), s["slam"]["nodes"].get<int>());
-  EXPECT_LT(s["reference"]["ate_rmse_m"].get<double>(), 0.10) << s["reference"].dump();
+  // Where the interruption lands depends on the machine's speed, and with it
+  // how much odometry drift the first, still open lap has gathered. So the run
+  // is checked against the same scans replayed by --max-scans instead of a
+  // fixed figure: the same trajectory and errors, to the digit.
+  const fs::path same_scans = Dir() / "same_scans";
+  const Result again = RunScout("replay " + log.string() + " --reference " + log.string() +
+                                " --synchronous --quiet --max-scans " + std::to_string(scans) +
+                                " --out " + same_scans.string());
+  ASSERT_EQ(again.exit_code, 0) << again.output;
+  EXPECT_EQ(ReadFile(out / "trajectory.tum"), ReadFile(same_scans / "trajectory.tum"));
+  const nlohmann::json t = nlohmann::json::parse(ReadFile(same_scans / "summary.json"));
+  EXPECT_EQ(s["reference"]["ate_rmse_m"], t["reference"]["ate_rmse_m"]);
+  EXPECT_EQ(s["slam"]["loop_closures"], t["slam"]["loop_closures"]);
+  // Odometry alone would be metres off after a lap (2 % scale, 0.1° per step).
+  EXPECT_LT(s["reference"]["ate_rmse_m"].get<double>(), 0.3) << s["reference"].dump();
 }
 
 // Scans with repeated times are replayed one period apart, so each still gets
