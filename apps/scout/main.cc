@@ -25,12 +25,11 @@ namespace {
 // The goal manager allocates and frees map-sized arrays (path distances, A*
 // state) many times a second. glibc serves such blocks with fresh mmap pages
 // and hands freed heap tops back to the kernel, so every one is faulted in
-// and zeroed again: in the museum that kernel work grew with the map until it
-// took half of the run (`scout explore --world museum --seed 1
-// --max-sim-time 2000`, 2026-12-03: 472 s of wall time, 109 s of it in the
-// kernel). Blocks up to 32 MiB from the heap, and freed memory kept for
-// reuse, made the same run 263 s (2 s in the kernel), with the same outputs.
-// The peak memory is what the run needs at once either way.
+// and zeroed again, work that grows with the map (`scout explore --world
+// museum --seed 1 --max-sim-time 2000`, 2026-12-03, two builds side by side:
+// 397 s of wall time, 97 s of it in the kernel). Blocks up to 32 MiB from the
+// heap, and freed memory kept for reuse, made the same run 214 s (2 s in the
+// kernel), with the same outputs and the same peak memory (689 against 702 MB).
 void KeepFreedMemoryForReuse() {
   mallopt(M_MMAP_THRESHOLD, 32 * 1024 * 1024);
   mallopt(M_TRIM_THRESHOLD, 1024 * 1024 * 1024);
