@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <stdexcept>
 #include <utility>
+#include <vector>
 
 #include "scout/explore/option_check.h"
 
@@ -23,6 +25,40 @@ namespace {
 
 constexpr float kInf = std::numeric_limits<float>::infinity();
 constexpr uint8_t kNoParent = 255;
+
+// A* state kept from one plan to the next (per thread): most searches expand a
+// small part of the map, and allocating and clearing map-sized arrays for each
+// cost more than the search itself in the museum's late, large map. A cell's
+// g and parent belong to this plan only when its stamp is this plan's
+// (opened) or one more (closed); older stamps read as never seen.
+struct SearchScratch {
+  std::vector<uint32_t> stamp;
+  std::vector<float> g;
+  std::vector<uint8_t> parent;
+  uint32_t opened = 0;  // this plan's mark; closed is opened + 1
+
+  // Starts a plan over 'num_cells' cells.
+  void Begin(int64_t num_cells) {
+    const size_t n = static_cast<size_t>(num_cells);
+    if (stamp.size() < n) {
+      stamp.resize(n, 0);
+      g.resize(n);
+      parent.resize(n);
+    }
+    if (opened >= std::numeric_limits<uint32_t>::max() - 2) {
+      std::fill(stamp.begin(), stamp.end(), 0);
+      opened = 0;
+    }
+    opened += 2;
+  }
+  uint32_t closed() const { return opened + 1; }
+  float G(int64_t flat) const { return stamp[flat] >= opened ? g[flat] : kInf; }
+  bool IsClosed(int64_t flat) const { return stamp[flat] == closed(); }
+  void Open(int64_t flat, float cost, uint8_t from) {
+    stamp[flat] = opened, g[flat] = cost, parent[flat] = from;
+  }
+  void Close(int64_t flat) { stamp[flat] = closed(); }
+};
 
 double Octile(int dx, int dy) {
   dx = std::abs(dx), dy = std::abs(dy);
@@ -64,9 +100,10 @@ std::optional<PlannedPath> PathPlanner::Plan(const PlanningMap& map, const Start
     return static_cast<float>(snap > 0.0 ? std::max(0.0, h - slack_cells) : h);
   };
 
-  std::vector<float> g(limits.num_cells(), kInf);
-  std::vector<uint8_t> parent(limits.num_cells(), kNoParent);
-  std::vector<uint8_t> closed(limits.num_cells(), 0);
+  thread_local SearchScratch scratch;
+  scratch.Begin(limits.num_cells());
+  const std::vector<float>& g = scratch.g;
+  const std::vector<uint8_t>& parent = scratch.parent;
   struct Entry {
     float f, h;
     int64_t flat;
@@ -82,8 +119,8 @@ std::optional<PlannedPath> PathPlanner::Plan(const PlanningMap& map, const Start
   for (const StartSeed& seed : start.seeds()) {
     const int64_t s = limits.FlatIndex(seed.cell);
     const float gs = static_cast<float>(seed.distance_m / limits.resolution());
-    if (gs >= g[s]) continue;
-    g[s] = gs;
+    if (gs >= scratch.G(s)) continue;
+    scratch.Open(s, gs, kNoParent);
     const float hs = heuristic(seed.cell);
     open.push_back({gs + hs, hs, s});
     std::push_heap(open.begin(), open.end(), later);
@@ -96,8 +133,8 @@ std::optional<PlannedPath> PathPlanner::Plan(const PlanningMap& map, const Start
     std::pop_heap(open.begin(), open.end(), later);
     const int64_t u = open.back().flat;
     open.pop_back();
-    if (closed[u]) continue;
-    closed[u] = 1;
+    if (scratch.IsClosed(u)) continue;
+    scratch.Close(u);
     ++path.expansions;
     const grid::CellIndex cu = limits.CellOfFlatIndex(u);
     if (is_goal(cu)) {
@@ -108,10 +145,10 @@ std::optional<PlannedPath> PathPlanner::Plan(const PlanningMap& map, const Start
       if (!map.StepAllowed(cu, k)) continue;
       const grid::CellIndex cv{cu.x + kNeighbourOffsets[k][0], cu.y + kNeighbourOffsets[k][1]};
       const int64_t v = limits.FlatIndex(cv);
-      if (closed[v]) continue;
+      if (scratch.IsClosed(v)) continue;
       const float gv = g[u] + kStep[k] * StepFactor(map, v);
-      if (gv < g[v]) {
-        g[v] = gv, parent[v] = static_cast<uint8_t>(k);
+      if (gv < scratch.G(v)) {
+        scratch.Open(v, gv, static_cast<uint8_t>(k));
         const float hv = heuristic(cv);
         open.push_back({gv + hv, hv, v});
         std::push_heap(open.begin(), open.end(), later);
