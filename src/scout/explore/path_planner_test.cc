@@ -5,6 +5,8 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <thread>
 
 #include "scout/explore/path_distance_field.h"
 #include "scout/explore/test_maps.h"
@@ -80,6 +82,31 @@ TEST(PathPlannerTest, FindsTheShortestPathThroughAMaze) {
   EXPECT_EQ(path->points.back(), b.At(38, 18));
   for (size_t i = 1; i < path->points.size(); ++i) {
     EXPECT_TRUE(map.SegmentTraversable(path->points[i - 1], path->points[i])) << i;
+  }
+}
+
+// The planner keeps its search state between plans (per thread): plans on
+// maps of other sizes, failed searches that closed every cell, and many plans
+// in a row must leave nothing behind that changes the next one.
+TEST(PathPlannerTest, APlanDoesNotDependOnThePlansBeforeIt) {
+  const MapBuilder maze = Serpentine();
+  const PlanningMap maze_map(maze.map(), PointRobot());
+  MapBuilder boxed(60, 50, 0.1, grid::CellState::kFree);
+  boxed.Wall(15, 15, 25, 15).Wall(15, 25, 25, 25).Wall(15, 15, 15, 25).Wall(25, 15, 25, 25);
+  const PlanningMap boxed_map(boxed.map(), TraversabilityOptions{});
+  const PathPlanner planner(PathPlannerOptions{});
+  const auto plan = [&] { return planner.Plan(maze_map, maze.At(2, 2), maze.At(38, 18)); };
+  std::optional<PlannedPath> fresh;
+  std::thread([&] { fresh = plan(); }).join();  // a thread that planned nothing before
+  ASSERT_TRUE(fresh.has_value());
+  for (int round = 0; round < 3; ++round) {
+    EXPECT_FALSE(planner.Plan(boxed_map, boxed.At(5, 5), boxed.At(20, 20)).has_value());
+    ASSERT_TRUE(planner.Plan(boxed_map, boxed.At(5, 5), boxed.At(50, 40)).has_value());
+    const std::optional<PlannedPath> again = plan();
+    ASSERT_TRUE(again.has_value());
+    EXPECT_EQ(again->points, fresh->points);
+    EXPECT_EQ(again->cell_path_length_m, fresh->cell_path_length_m);
+    EXPECT_EQ(again->expansions, fresh->expansions);
   }
 }
 
