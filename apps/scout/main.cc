@@ -22,14 +22,15 @@
 
 namespace {
 
-// The goal manager allocates and frees map-sized arrays (path distances, A*
-// state) many times a second. glibc serves such blocks with fresh mmap pages
-// and hands freed heap tops back to the kernel, so every one is faulted in
-// and zeroed again, work that grows with the map (`scout explore --world
-// museum --seed 1 --max-sim-time 2000`, 2026-12-03, two builds side by side:
-// 397 s of wall time, 97 s of it in the kernel). Blocks up to 32 MiB from the
-// heap, and freed memory kept for reuse, made the same run 214 s (2 s in the
-// kernel), with the same outputs and the same peak memory (689 against 702 MB).
+// The goal manager allocates and frees map-sized arrays (the path distance
+// fields; the A* state until PathPlanner kept it between plans) many times a
+// second. glibc serves such blocks with fresh mmap pages and hands freed heap
+// tops back to the kernel, so every one is faulted in and zeroed again, work
+// that grows with the map (`scout explore --world museum --seed 1
+// --max-sim-time 2000`, 2026-12-03, two builds side by side: 397 s of wall
+// time, 97 s of it in the kernel). Blocks up to 32 MiB from the heap, and
+// freed memory kept for reuse, made the same run 214 s (2 s in the kernel),
+// with the same outputs and the same peak memory (689 against 702 MB).
 void KeepFreedMemoryForReuse() {
   mallopt(M_MMAP_THRESHOLD, 32 * 1024 * 1024);
   mallopt(M_TRIM_THRESHOLD, 1024 * 1024 * 1024);
