@@ -114,20 +114,30 @@ double AnswerMap::Margin(const Eigen::Vector2d& q) const {
 
 double AnswerMap::WindowMargin(const Eigen::Vector2d& q, const CellIndex& c, bool objects) const {
   const double res = limits_.resolution();
+  // Squares of the cells within Chebyshev distance 'ring' of c, and every
+  // square beyond them, lie at least the distance from q to the edge of that
+  // block of cells.
+  const auto distance_to_block_edge = [&](int ring) {
+    const Eigen::Vector2d lo = limits_.CellCenter({c.x - ring, c.y - ring}).array() - 0.5 * res;
+    const Eigen::Vector2d hi = limits_.CellCenter({c.x + ring, c.y + ring}).array() + 0.5 * res;
+    return std::min({q.x() - lo.x(), hi.x() - q.x(), q.y() - lo.y(), hi.y() - q.y()});
+  };
   // Beyond the window, any cell is at least the distance from q to the window's edge.
-  const Eigen::Vector2d window_lo =
-      limits_.CellCenter({c.x - kWindowRadius, c.y - kWindowRadius}).array() - 0.5 * res;
-  const Eigen::Vector2d window_hi =
-      limits_.CellCenter({c.x + kWindowRadius, c.y + kWindowRadius}).array() + 0.5 * res;
-  double margin = std::min(
-      {q.x() - window_lo.x(), window_hi.x() - q.x(), q.y() - window_lo.y(), window_hi.y() - q.y()});
-  for (int dy = -kWindowRadius; dy <= kWindowRadius; ++dy) {
-    for (int dx = -kWindowRadius; dx <= kWindowRadius; ++dx) {
-      const CellIndex n{c.x + dx, c.y + dy};
-      if (ObjectsAtCell(n) == objects) continue;
-      const Eigen::Vector2d centre = limits_.CellCenter(n);
-      margin = std::min(margin, DistanceToSquareBelow(q, centre.array() - 0.5 * res,
-                                                      centre.array() + 0.5 * res, margin));
+  double margin = distance_to_block_edge(kWindowRadius);
+  // Ring by ring from the inside: once the margin is no larger than the
+  // distance to the next ring's inner edge, no cell of that ring or beyond can
+  // lower it, so the result equals scanning the whole window.
+  for (int ring = 1; ring <= kWindowRadius; ++ring) {
+    if (margin <= distance_to_block_edge(ring - 1)) break;
+    for (int dy = -ring; dy <= ring; ++dy) {
+      const bool edge_row = dy == -ring || dy == ring;
+      for (int dx = -ring; dx <= ring; dx += edge_row ? 1 : 2 * ring) {
+        const CellIndex n{c.x + dx, c.y + dy};
+        if (ObjectsAtCell(n) == objects) continue;
+        const Eigen::Vector2d centre = limits_.CellCenter(n);
+        margin = std::min(margin, DistanceToSquareBelow(q, centre.array() - 0.5 * res,
+                                                        centre.array() + 0.5 * res, margin));
+      }
     }
   }
   return margin;
