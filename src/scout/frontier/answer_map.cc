@@ -17,8 +17,11 @@ using grid::CellIndex;
 constexpr int kWindowRadius = 2;
 
 // Distance from 'q' to the closed axis-aligned square [lo, hi], if it is below
-// 'bound'; otherwise some value >= 'bound'. std::hypot is exact when a side is
-// 0 and never below the larger side, so both shortcuts return what it would.
+// 'bound'; otherwise some value >= 'bound'. Both shortcuts return the exact
+// one-sided distance. The root is not std::hypot, which guards against
+// overflow and costs several times more (distances here are metres); it is
+// still never below the larger side, as sqrt(fl(a * a)) == |a| and the sum
+// of squares rounds to no less than either square.
 double DistanceToSquareBelow(const Eigen::Vector2d& q, const Eigen::Vector2d& lo,
                              const Eigen::Vector2d& hi, double bound) {
   const double dx = std::max({lo.x() - q.x(), 0.0, q.x() - hi.x()});
@@ -26,7 +29,7 @@ double DistanceToSquareBelow(const Eigen::Vector2d& q, const Eigen::Vector2d& lo
   if (dx == 0.0) return dy;
   if (dy == 0.0) return dx;
   if (std::max(dx, dy) >= bound) return bound;
-  return std::hypot(dx, dy);
+  return std::sqrt(dx * dx + dy * dy);
 }
 
 }  // namespace
