@@ -23,16 +23,20 @@
 namespace {
 
 // The goal manager allocates and frees map-sized arrays (the path distance
-// fields; the A* state until PathPlanner kept it between plans) many times a
-// second. glibc serves such blocks with fresh mmap pages and hands freed heap
-// tops back to the kernel, so every one is faulted in and zeroed again, work
-// that grows with the map (`scout explore --world museum --seed 1
-// --max-sim-time 2000`, 2026-12-03, two builds side by side: 397 s of wall
-// time, 97 s of it in the kernel). Blocks up to 32 MiB from the heap, and
-// freed memory kept for reuse, made the same run 214 s (2 s in the kernel),
-// with the same outputs and the same peak memory (689 against 702 MB).
+// fields) many times a second. glibc serves large blocks with fresh mmap
+// pages and hands freed heap tops back to the kernel, so every one is faulted
+// in and zeroed again, work that grows with the map. Measured with `scout
+// explore --world museum --seed 1`, two builds side by side, same outputs:
+// blocks up to 32 MiB from the heap and freed memory kept (the threshold's
+// cap) took the run to 2000 s of simulated time from 397 to 214 s of wall
+// time (kernel 97 -> 2 s; 2026-12-03). Beyond 32 MiB, late in a large map,
+// blocks still came from mmap: no mmap at all (glibc falls back to it only
+// when the heap cannot grow) took the run to 3600 s from 890 to 817 s, beside
+// each other and a third job (kernel 42.7 -> 4.9 s, peak 1075 -> 1054 MB;
+// 2026-12-04).
 void KeepFreedMemoryForReuse() {
   mallopt(M_MMAP_THRESHOLD, 32 * 1024 * 1024);
+  mallopt(M_MMAP_MAX, 0);
   mallopt(M_TRIM_THRESHOLD, 1024 * 1024 * 1024);
 }
 
