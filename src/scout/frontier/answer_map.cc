@@ -18,10 +18,11 @@ constexpr int kWindowRadius = 2;
 
 // Distance from 'q' to the closed axis-aligned square [lo, hi], if it is below
 // 'bound'; otherwise some value >= 'bound'. Both shortcuts return the exact
-// one-sided distance. The root is not std::hypot, which guards against
-// overflow and costs several times more (distances here are metres); it is
-// still never below the larger side, as sqrt(fl(a * a)) == |a| and the sum
-// of squares rounds to no less than either square.
+// one-sided distance. The root is not std::hypot, whose guard against
+// overflow metres do not need (it held 1-1.6 % of a 200 m frontier-bench
+// profile's samples); it is still never below the larger side, as
+// sqrt(fl(a * a)) == |a| and the sum of squares rounds to no less than
+// either square.
 double DistanceToSquareBelow(const Eigen::Vector2d& q, const Eigen::Vector2d& lo,
                              const Eigen::Vector2d& hi, double bound) {
   const double dx = std::max({lo.x() - q.x(), 0.0, q.x() - hi.x()});
@@ -129,7 +130,9 @@ double AnswerMap::WindowMargin(const Eigen::Vector2d& q, const CellIndex& c, boo
   double margin = distance_to_block_edge(kWindowRadius);
   // Ring by ring from the inside: once the margin is no larger than the
   // distance to the next ring's inner edge, no cell of that ring or beyond can
-  // lower it, so the result equals scanning the whole window.
+  // lower it, so the result equals scanning the whole window (up to the
+  // rounding of the block's edge against the cells' own squares, far below
+  // the exact strategy's safety distance).
   for (int ring = 1; ring <= kWindowRadius; ++ring) {
     if (margin <= distance_to_block_edge(ring - 1)) break;
     for (int dy = -ring; dy <= ring; ++dy) {
