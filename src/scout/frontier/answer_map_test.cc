@@ -3,6 +3,9 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <random>
 
 #include "scout/frontier/test_grids.h"
@@ -54,6 +57,53 @@ RC_GTEST_PROP(AnswerMap, MarginIsConservative, ()) {
     const double angle = uniform(0.0, 6.283);
     const Eigen::Vector2d q2 = q + step * Eigen::Vector2d(std::cos(angle), std::sin(angle));
     RC_ASSERT(a.Objects(q2) == a.Objects(q));
+  }
+}
+
+// Random grids: within 1.4 cells of another answer the margin is the exact
+// distance to it (the window scan, which stops early once no farther ring can
+// matter, must still find the nearest cell and nothing nearer than it).
+RC_GTEST_PROP(AnswerMap, MarginIsTheDistanceToANearbyOtherAnswer, ()) {
+  const uint64_t seed = *rc::gen::arbitrary<uint64_t>();
+  std::mt19937_64 rng(seed);
+  const int w = 4 + static_cast<int>(rng() % 12), h = 4 + static_cast<int>(rng() % 12);
+  std::vector<std::string> rows(h, std::string(w, '?'));
+  for (auto& row : rows) {
+    for (char& ch : row) {
+      const int r = static_cast<int>(rng() % 10);
+      ch = r < 6 ? '.' : (r < 8 ? '#' : '?');
+    }
+  }
+  const double res = 0.05;
+  const auto g = DrawGrid(rows, res, {0.4, -0.2});
+  const AnswerMap a(g->States(), g->limits());
+  const grid::MapLimits& limits = g->limits();
+  const geometry::Box2d bounds = limits.Bounds();
+  const auto uniform = [&](double lo, double hi) {
+    return lo + (hi - lo) * static_cast<double>(rng() >> 11) / static_cast<double>(1ull << 53);
+  };
+  for (int trial = 0; trial < 100; ++trial) {
+    const Eigen::Vector2d q(uniform(bounds.min.x(), bounds.max.x()),
+                            uniform(bounds.min.y(), bounds.max.y()));
+    const bool objects = a.Objects(q);
+    // Brute force over every cell's square; outside the grid nobody objects.
+    double nearest = objects ? std::min({q.x() - bounds.min.x(), bounds.max.x() - q.x(),
+                                         q.y() - bounds.min.y(), bounds.max.y() - q.y()})
+                             : std::numeric_limits<double>::infinity();
+    for (int64_t flat = 0; flat < limits.num_cells(); ++flat) {
+      const grid::CellIndex c = limits.CellOfFlatIndex(flat);
+      if (a.ObjectsAtCell(c) == objects) continue;
+      const Eigen::Vector2d lo = limits.CellCenter(c).array() - 0.5 * res;
+      const Eigen::Vector2d hi = limits.CellCenter(c).array() + 0.5 * res;
+      const double dx = std::max({lo.x() - q.x(), 0.0, q.x() - hi.x()});
+      const double dy = std::max({lo.y() - q.y(), 0.0, q.y() - hi.y()});
+      nearest = std::min(nearest, std::sqrt(dx * dx + dy * dy));
+    }
+    // Up to 1.4 cells the other answer's cell centre lies within 2 sqrt(2)
+    // cells of q's cell centre, so Margin scans the window, whose edge lies
+    // at least 1.5 cells away; both of its rings can hold the nearest cell.
+    if (nearest >= 1.4 * res) continue;
+    RC_ASSERT(std::abs(a.Margin(q) - nearest) <= 1e-12);
   }
 }
 
