@@ -46,12 +46,17 @@ store_run() {
 
 # restore_run NAME: when $OUT/NAME has no finished run, copies the stored one there.
 restore_run() {
-  local name=$1
+  local name=$1 lock_fd
   [[ -n $STORE && -f $STORE/$name/summary.json && -f $STORE/$name/command.txt ]] || return 0
   [[ -f $OUT/$name/summary.json && -f $OUT/$name/command.txt ]] && return 0
-  rm -rf "${OUT:?}/$name"
-  mkdir -p "$OUT"
-  cp -r "$STORE/$name" "$OUT/$name"
+  mkdir -p "$OUT/logs"
+  # A run another scripts/results is making right now (run_one holds its lock) is left alone.
+  exec {lock_fd}>"$OUT/logs/$name.lock"
+  if flock -n "$lock_fd"; then
+    rm -rf "${OUT:?}/$name"
+    cp -r "$STORE/$name" "$OUT/$name"
+  fi
+  exec {lock_fd}>&-
 }
 
 # builds_note NAME...: which builds made the finished runs, so a reader sees what is mixed.
@@ -238,13 +243,16 @@ explore_figures() {
 # store_finished NAME...: stores every finished run with a recorded build the store lacks or holds
 # in another version (runs made before the store existed, or by an interrupted script).
 store_finished() {
-  local name
+  local name lock_fd
   [[ -n $STORE ]] || return 0
   for name in "$@"; do
     [[ -f $OUT/$name/summary.json && -f $OUT/$name/command.txt && -f $OUT/$name/build.txt ]] ||
       continue
     cmp -s "$OUT/$name/summary.json" "$STORE/$name/summary.json" && continue
-    store_run "$name"
+    # A run still being made (its run_one holds the lock) is stored by that run_one.
+    exec {lock_fd}>"$OUT/logs/$name.lock"
+    if flock -n "$lock_fd"; then store_run "$name"; fi
+    exec {lock_fd}>&-
   done
 }
 
