@@ -35,6 +35,21 @@ rm -rf "$OUT"
 restore_run replay-a
 cmp -s "$OUT/replay-a/summary.json" "$STORE/replay-a/summary.json" || fail "run not restored"
 
+# A run another scripts/results is making right now (its run_one holds OUT/logs/NAME.lock) is
+# left alone; once the lock is released the stored run comes back.
+rm -rf "$OUT/replay-a"
+mkdir -p "$OUT/replay-a" "$OUT/logs"
+echo partial >"$OUT/replay-a/being-made"
+exec {held}>"$OUT/logs/replay-a.lock"
+flock "$held"
+restore_run replay-a
+[[ -f $OUT/replay-a/being-made && ! -e $OUT/replay-a/summary.json ]] ||
+  fail "restore replaced a run being made"
+exec {held}>&-
+restore_run replay-a
+cmp -s "$OUT/replay-a/summary.json" "$STORE/replay-a/summary.json" ||
+  fail "run not restored after its lock was released"
+
 # A finished run in OUT is never replaced by the stored one.
 echo '{"scans": 4}' >"$OUT/replay-a/summary.json"
 restore_run replay-a
@@ -43,6 +58,15 @@ grep -q '"scans": 4' "$OUT/replay-a/summary.json" || fail "restore overwrote a f
 # store_finished stores changed runs, and skips runs whose build is not recorded.
 store_finished replay-a
 grep -q '"scans": 4' "$STORE/replay-a/summary.json" || fail "changed run not stored again"
+# ... but not while its run_one holds the lock (that run_one stores it when it is done).
+echo '{"scans": 5}' >"$OUT/replay-a/summary.json"
+exec {held}>"$OUT/logs/replay-a.lock"
+flock "$held"
+store_finished replay-a
+grep -q '"scans": 4' "$STORE/replay-a/summary.json" || fail "a run being made was stored"
+exec {held}>&-
+store_finished replay-a
+grep -q '"scans": 5' "$STORE/replay-a/summary.json" || fail "run not stored after its lock was released"
 make_run explore-b "$head"
 rm "$OUT/explore-b/build.txt"
 store_finished explore-b
