@@ -371,7 +371,10 @@ write_document() {
     echo "time), has exact at 62.5 ms per round against bfs's 46.0 (1.36x) while querying 29x fewer"
     echo "points (the same counts as its run of 2026-12-02, which had 128.7 against 57.1 ms, 2.25x,"
     echo "and took 6750 s of wall time against 4732 s now). As a pair (\`--strategies bfs,exact\`,"
-    echo "build 87a82fe, beside other runs) exact took 56.5 against 43.6 ms per round (1.29x)."
+    echo "build 87a82fe, beside other runs) exact took 56.5 against 43.6 ms per round (1.29x). The"
+    echo "500 m run, made again beside the 350 m one with the same build (5556 s of wall time, the"
+    echo "same counts as on 2026-12-02), has exact at 119.7 against bfs's 75.7 ms (1.58x; 1.84x, 156.4"
+    echo "against 85.1 ms, before)."
     echo
     stale_note "${SIZE[@]}"
     tables bench "${SIZE[@]}"
