@@ -44,19 +44,30 @@ store_run() {
   mv "$STORE/$name.tmp" "$STORE/$name"
 }
 
+# run_lock NAME: the file whose lock scripts/results' run_one holds while it makes run NAME.
+run_lock() { echo "$OUT/logs/$1.lock"; }
+
+# unless_being_made NAME COMMAND...: runs COMMAND, holding run NAME's lock, unless another
+# scripts/results is making that run right now (then does nothing).
+unless_being_made() {
+  local name=$1 lock_fd
+  shift
+  mkdir -p "$OUT/logs"
+  exec {lock_fd}>"$(run_lock "$name")"
+  if flock -n "$lock_fd"; then "$@"; fi
+  exec {lock_fd}>&-
+}
+
 # restore_run NAME: when $OUT/NAME has no finished run, copies the stored one there.
 restore_run() {
-  local name=$1 lock_fd
+  local name=$1
   [[ -n $STORE && -f $STORE/$name/summary.json && -f $STORE/$name/command.txt ]] || return 0
   [[ -f $OUT/$name/summary.json && -f $OUT/$name/command.txt ]] && return 0
-  mkdir -p "$OUT/logs"
-  # A run another scripts/results is making right now (run_one holds its lock) is left alone.
-  exec {lock_fd}>"$OUT/logs/$name.lock"
-  if flock -n "$lock_fd"; then
-    rm -rf "${OUT:?}/$name"
-    cp -r "$STORE/$name" "$OUT/$name"
-  fi
-  exec {lock_fd}>&-
+  unless_being_made "$name" copy_stored_run "$name"
+}
+copy_stored_run() {
+  rm -rf "${OUT:?}/$1"
+  cp -r "$STORE/$1" "$OUT/$1"
 }
 
 # builds_note NAME...: which builds made the finished runs, so a reader sees what is mixed.
@@ -243,16 +254,14 @@ explore_figures() {
 # store_finished NAME...: stores every finished run with a recorded build the store lacks or holds
 # in another version (runs made before the store existed, or by an interrupted script).
 store_finished() {
-  local name lock_fd
+  local name
   [[ -n $STORE ]] || return 0
   for name in "$@"; do
     [[ -f $OUT/$name/summary.json && -f $OUT/$name/command.txt && -f $OUT/$name/build.txt ]] ||
       continue
     cmp -s "$OUT/$name/summary.json" "$STORE/$name/summary.json" && continue
-    # A run still being made (its run_one holds the lock) is stored by that run_one.
-    exec {lock_fd}>"$OUT/logs/$name.lock"
-    if flock -n "$lock_fd"; then store_run "$name"; fi
-    exec {lock_fd}>&-
+    # A run still being made is stored by its own run_one when it is done.
+    unless_being_made "$name" store_run "$name"
   done
 }
 
