@@ -7,6 +7,8 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <string>
+#include <vector>
 
 #include "scout/frontier/test_grids.h"
 
@@ -14,6 +16,25 @@ namespace scout::frontier {
 namespace {
 
 using testing::DrawGrid;
+
+// A w x h grid of random cells: of every 10 draws, 'free_in_10' give free
+// ('.'), the next 'occupied_in_10' occupied ('#'), the rest unknown ('?').
+std::vector<std::string> RandomRows(std::mt19937_64& rng, int w, int h, int free_in_10,
+                                    int occupied_in_10) {
+  std::vector<std::string> rows(h, std::string(w, '?'));
+  for (auto& row : rows) {
+    for (char& ch : row) {
+      const int r = static_cast<int>(rng() % 10);
+      ch = r < free_in_10 ? '.' : (r < free_in_10 + occupied_in_10 ? '#' : '?');
+    }
+  }
+  return rows;
+}
+
+// Uniform in [lo, hi) from 53 random bits.
+double Uniform(std::mt19937_64& rng, double lo, double hi) {
+  return lo + (hi - lo) * static_cast<double>(rng() >> 11) / static_cast<double>(1ull << 53);
+}
 
 TEST(AnswerMap, KnownNonFrontierCellsObject) {
   const auto g = DrawGrid({"?????",  //
@@ -36,19 +57,11 @@ RC_GTEST_PROP(AnswerMap, MarginIsConservative, ()) {
   const uint64_t seed = *rc::gen::arbitrary<uint64_t>();
   std::mt19937_64 rng(seed);
   const int w = 6 + static_cast<int>(rng() % 20), h = 6 + static_cast<int>(rng() % 20);
-  std::vector<std::string> rows(h, std::string(w, '?'));
-  for (auto& row : rows) {
-    for (char& ch : row) {
-      const int r = static_cast<int>(rng() % 10);
-      ch = r < 5 ? '.' : (r < 7 ? '#' : '?');
-    }
-  }
+  const std::vector<std::string> rows = RandomRows(rng, w, h, 5, 2);
   const double res = 0.05;
   const auto g = DrawGrid(rows, res, {-0.3, 0.7});
   const AnswerMap a(g->States(), g->limits());
-  const auto uniform = [&](double lo, double hi) {
-    return lo + (hi - lo) * static_cast<double>(rng() >> 11) / static_cast<double>(1ull << 53);
-  };
+  const auto uniform = [&](double lo, double hi) { return Uniform(rng, lo, hi); };
   for (int trial = 0; trial < 200; ++trial) {
     const Eigen::Vector2d q(uniform(-0.6, -0.3 + w * res + 0.3), uniform(0.4, 0.7 + h * res + 0.3));
     const double m = a.Margin(q);
@@ -67,21 +80,13 @@ RC_GTEST_PROP(AnswerMap, MarginIsTheDistanceToANearbyOtherAnswer, ()) {
   const uint64_t seed = *rc::gen::arbitrary<uint64_t>();
   std::mt19937_64 rng(seed);
   const int w = 4 + static_cast<int>(rng() % 12), h = 4 + static_cast<int>(rng() % 12);
-  std::vector<std::string> rows(h, std::string(w, '?'));
-  for (auto& row : rows) {
-    for (char& ch : row) {
-      const int r = static_cast<int>(rng() % 10);
-      ch = r < 6 ? '.' : (r < 8 ? '#' : '?');
-    }
-  }
+  const std::vector<std::string> rows = RandomRows(rng, w, h, 6, 2);
   const double res = 0.05;
   const auto g = DrawGrid(rows, res, {0.4, -0.2});
   const AnswerMap a(g->States(), g->limits());
   const grid::MapLimits& limits = g->limits();
   const geometry::Box2d bounds = limits.Bounds();
-  const auto uniform = [&](double lo, double hi) {
-    return lo + (hi - lo) * static_cast<double>(rng() >> 11) / static_cast<double>(1ull << 53);
-  };
+  const auto uniform = [&](double lo, double hi) { return Uniform(rng, lo, hi); };
   for (int trial = 0; trial < 100; ++trial) {
     const Eigen::Vector2d q(uniform(bounds.min.x(), bounds.max.x()),
                             uniform(bounds.min.y(), bounds.max.y()));
