@@ -77,7 +77,7 @@ builds_note() {
     f=$OUT/$name/build.txt
     [[ -f $OUT/$name/summary.json ]] || continue
     if [[ -f $f ]]; then cat "$f"; else echo "not recorded"; fi
-  done | sort | uniq -c | sort -rn | awk '{c=$1; $1=""; sub(/^ /,""); printf "%s`%s` (%d runs)", (NR>1?", ":""), $0, c} END {if (NR) print ""}'
+  done | sort | uniq -c | sort -rn | awk '{c=$1; $1=""; sub(/^ /,""); printf "%s`%s` (%d run%s)", (NR>1?", ":""), $0, c, (c==1?"":"s")} END {if (NR) print ""}'
 }
 
 # existing NAME...: prints the directories of the runs that finished.
@@ -364,14 +364,18 @@ write_document() {
     echo
     echo "Generated square museums (grids of halls, which scale; the office's inner block would"
     echo "become one huge room) of growing side, one seed. Up to 100 m, frontier-bench also runs"
-    echo "\`full\` as the truth (accuracy columns); its cost grows fastest (309 of the 453 s at"
+    echo "\`full\` as the truth (accuracy columns); its cost grows fastest (182 of the 252 s at"
     echo "100 m), so larger worlds run with \`--no-reference\`, the strategies without it."
     echo "\`dfd\`, which re-queries every point every round, grows next fastest (2867 of the 4732 s"
     echo "at 350 m): the 500 m world runs \`bfs\`, \`direct\` and \`exact\` only. Its P is against what"
     echo "\`dfd\` would have queried, every local frontier point of every round (\`frontier.csv\`'s"
     echo "\`local_points\`; at 350 m their sum equals dfd's count, 67,752,512,197)."
     echo
-    echo "*ms per round* is measured in lockstep, beside the other strategies of the run. The 200 m"
+    echo "*ms per round* is measured in lockstep, beside the other strategies of the run. The 50 m"
+    echo "and 100 m runs below were made again on 2026-12-04 with build 354b325, one after the other"
+    echo "beside other jobs: exact at 1.30 and 4.99 ms per round against bfs's 1.85 and 6.43 (the"
+    echo "same counts as their runs with build f52b7d4, which had 2.10 against 2.90 and 14.83"
+    echo "against 14.86 ms). The 200 m"
     echo "run below (2026-12-04, build 024ad83) has exact at 13.2 ms per round against bfs's 14.4 (its"
     echo "run of 2026-12-02 had 45.8 against 32.2 and took 1091 s of wall time against 497 s now;"
     echo "between them the margin look-ups got cheaper and large blocks stopped coming from mmap,"
