@@ -71,6 +71,16 @@ std::optional<VelocityCommand> NearestSteeredArc(double v, double k, double side
   return std::nullopt;
 }
 
+// The command of a robot that stops short of an obstacle on 'side' (+1:
+// left): no forward speed, and a turn on the spot away from the obstacle
+// unless the follower's own turn is at least stop_turn_radps.
+VelocityCommand StopAndTurnAway(const VelocityCommand& command, double side,
+                                const CollisionGuardOptions& options, double max_angular_radps) {
+  const double rate = std::min(options.stop_turn_radps, max_angular_radps);
+  if (std::abs(command.angular_radps) >= rate) return {0.0, command.angular_radps};
+  return {0.0, side > 0.0 ? -rate : rate};
+}
+
 // The commanded arc alone, as if speed and turn rate changed at once.
 GuardedCommand GuardCommandedArc(const VelocityCommand& command,
                                  const std::vector<Eigen::Vector2d>& obstacles,
@@ -142,6 +152,7 @@ void Validate(const CollisionGuardOptions& o) {
   CheckAtLeast("guard", "steer_max_curvature_per_m", o.steer_max_curvature_per_m, 0.0);
   CheckAtLeast("guard", "steer_step_per_m", o.steer_step_per_m, 0.0, /*strict=*/true);
   CheckAtLeast("guard", "memory_s", o.memory_s, 0.0);
+  CheckAtLeast("guard", "stop_turn_radps", o.stop_turn_radps, 0.0);
 }
 
 GuardedCommand GuardCommand(const VelocityCommand& command,
@@ -170,6 +181,7 @@ GuardedCommand GuardCommand(const VelocityCommand& command,
           return CanStopAfter(c, *base, obstacles, robot_radius_m, options.clearance_m);
         });
     if (arc) return {*arc, arc->linear_mps < v, false, true};
+    return {StopAndTurnAway(command, side, options, max_angular_radps), true, true, false};
   }
   return {{0.0, 0.0}, true, true, false};
 }
@@ -203,8 +215,9 @@ GuardedCommand GuardCommandedArc(const VelocityCommand& command,
   const double free_m = hit_m - kStepM;
   const double v_safe = free_m / options.horizon_s;
   if (free_m < kStepM) {
-    // Turn on the spot toward the follower's heading; the disc sweeps nothing.
-    out.command.linear_mps = 0.0;
+    // Turn on the spot (the disc sweeps nothing): toward the follower's
+    // heading if it turns decisively, else away from the obstacle.
+    out.command = StopAndTurnAway(command, side, options, max_angular_radps);
     out.limited = out.stopped = true;
     return out;
   }
@@ -229,6 +242,7 @@ GuardedCommand GuardBackward(const VelocityCommand& command,
   for (const Eigen::Vector2d& p : obstacles) mirrored.emplace_back(-p.x(), p.y());
   CollisionGuardOptions no_steering = options;
   no_steering.steer_max_curvature_per_m = 0.0;
+  no_steering.stop_turn_radps = 0.0;  // backing up stops straight
   GuardedCommand out = GuardCommand({-command.linear_mps, -command.angular_radps}, mirrored,
                                     robot_radius_m, no_steering);
   out.command = {-out.command.linear_mps, -out.command.angular_radps};

@@ -70,12 +70,52 @@ TEST(CollisionGuardTest, SlowsDownAndStopsBeforeAPostAhead) {
   EXPECT_TRUE(closer.limited);
   EXPECT_FALSE(closer.stopped);
   EXPECT_LT(closer.command.linear_mps, 0.5);
-  const GuardedCommand touching = GuardCommand({0.5, 0.3}, {{0.235, 0.0}}, kRadius, o);
+  const GuardedCommand touching = GuardCommand({0.5, 0.6}, {{0.235, 0.0}}, kRadius, o);
   EXPECT_TRUE(touching.stopped);
   EXPECT_EQ(touching.command.linear_mps, 0.0);
-  EXPECT_DOUBLE_EQ(touching.command.angular_radps, 0.3);  // still turns
+  EXPECT_DOUBLE_EQ(touching.command.angular_radps, 0.6);  // still turns as the follower does
   // Driven to the end, it never comes within the clearance.
   EXPECT_GE(ClosestApproach({0.5, 0.0}, post, o, 5.0), kRadius + o.clearance_m - 0.011);
+}
+
+TEST(CollisionGuardTest, AStoppedRobotTurnsAwayFromWhatStopsItAndDrivesOn) {
+  // The office, seed 12: a wall 1 cm from the disc on the right, bending
+  // away ahead; the follower aims straight along its path. No arc keeps the
+  // clearance, so the robot stops; turning away, it gets free and drives on.
+  std::vector<Eigen::Vector2d> wall;
+  for (double x = -0.3; x <= 1.5; x += 0.01) wall.push_back({x, -0.21 - 0.42 * std::max(x, 0.0)});
+  const VelocityCommand along_path{0.5, 0.002};
+  const GuardedCommand g = GuardCommand(along_path, wall, kRadius, {}, 1.0);
+  EXPECT_TRUE(g.stopped);
+  EXPECT_EQ(g.command.linear_mps, 0.0);
+  EXPECT_DOUBLE_EQ(g.command.angular_radps, 0.5);  // left, away from the wall
+  // A wall corner ahead-left (seed 13): turns right.
+  std::vector<Eigen::Vector2d> corner;
+  for (double t = 0.0; t <= 0.5; t += 0.01) corner.push_back({0.16 - 0.6 * t, 0.17 + 0.6 * t});
+  EXPECT_DOUBLE_EQ(GuardCommand(along_path, corner, kRadius, {}, 1.0).command.angular_radps, -0.5);
+  // Driven with the guard for 3 s: the robot leaves, never touching the wall.
+  // Keeping the follower's turn, it stands still.
+  const auto drive = [&](const CollisionGuardOptions& o, double* closest) {
+    Eigen::Vector2d pos(0, 0);
+    double heading = 0.0;
+    *closest = 1e9;
+    for (double t = 0; t < 3.0; t += 0.01) {
+      std::vector<Eigen::Vector2d> local;
+      const Eigen::Rotation2Dd to_robot(-heading);
+      for (const Eigen::Vector2d& p : wall) local.push_back(to_robot * (p - pos));
+      const GuardedCommand c = GuardCommand(along_path, local, kRadius, o, 1.0);
+      heading += c.command.angular_radps * 0.01;
+      pos += c.command.linear_mps * 0.01 * Eigen::Vector2d(std::cos(heading), std::sin(heading));
+      for (const Eigen::Vector2d& p : wall) *closest = std::min(*closest, (p - pos).norm());
+    }
+    return pos.norm();
+  };
+  double closest = 0.0;
+  EXPECT_GT(drive({}, &closest), 0.5);
+  EXPECT_GE(closest, kRadius);
+  CollisionGuardOptions keep_turn;
+  keep_turn.stop_turn_radps = 0.0;
+  EXPECT_LT(drive(keep_turn, &closest), 0.01);
 }
 
 TEST(CollisionGuardTest, SteersTheNearestClearArcAwayFromAPost) {

@@ -1,5 +1,6 @@
 #include "scout/explore/scan_memory.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -20,9 +21,18 @@ ScanMemory::ScanMemory(double memory_s, double radius_m)
 
 void ScanMemory::Add(double time_s, const geometry::Rigid2d& pose,
                      const std::vector<Eigen::Vector2d>& returns) {
-  while (!scans_.empty() && scans_.front().time_s < time_s - memory_s_) scans_.pop_front();
+  if (has_last_ && (pose.translation() - last_position_).norm() > kStillM) {
+    moving_time_s_ += std::max(0.0, time_s - last_time_s_);
+  }
+  has_last_ = true;
+  last_time_s_ = time_s;
+  last_position_ = pose.translation();
+  while (!scans_.empty() && (scans_.front().moving_time_s < moving_time_s_ - memory_s_ ||
+                             static_cast<int>(scans_.size()) >= kMaxScans)) {
+    scans_.pop_front();
+  }
   if (memory_s_ <= 0.0) return;
-  Scan scan{time_s, {}};
+  Scan scan{moving_time_s_, {}};
   for (const Eigen::Vector2d& p : returns) {
     if (p.norm() <= radius_m_) scan.points.push_back(pose * p);
   }

@@ -41,6 +41,7 @@ void ReadGoals(YamlSection s, explore::GoalManagerOptions* o) {
     g.ReadNonNegativeAtMost("steer_step_per_m", &o->guard.steer_step_per_m, 100.0);
     g.ReadNonNegativeAtMost("memory_s", &o->guard.memory_s, 600.0);
     g.ReadBool("predict_motion", &o->guard.predict_motion);
+    g.ReadNonNegativeAtMost("stop_turn_radps", &o->guard.stop_turn_radps, 10.0);
     g.RejectUnknownKeys();
   }
   {

@@ -50,6 +50,7 @@ TEST_F(ExploreConfigTest, DefaultFileMatchesTheBuiltInDefaults) {
   EXPECT_DOUBLE_EQ(c.explore.goals.guard.horizon_s, d.explore.goals.guard.horizon_s);
   EXPECT_DOUBLE_EQ(c.explore.goals.guard.memory_s, d.explore.goals.guard.memory_s);
   EXPECT_EQ(c.explore.goals.guard.predict_motion, d.explore.goals.guard.predict_motion);
+  EXPECT_DOUBLE_EQ(c.explore.goals.guard.stop_turn_radps, d.explore.goals.guard.stop_turn_radps);
   EXPECT_DOUBLE_EQ(c.explore.traversability.narrow_margin_m,
                    d.explore.traversability.narrow_margin_m);
   EXPECT_EQ(c.explore.goals.return_to_start, d.explore.goals.return_to_start);
@@ -76,12 +77,14 @@ TEST_F(ExploreConfigTest, DefaultFileMatchesTheBuiltInDefaults) {
 TEST_F(ExploreConfigTest, ValuesAreReadWithTheirUnits) {
   const ScoutConfig c = Load(
       "explore:\n  max_sim_time_s: 120\n  initial_turn_deg: 90\n  goals:\n    return_to_start: "
-      "true\n    guard:\n      predict_motion: true\n  follower:\n    rotate_in_place_heading_deg: "
+      "true\n    guard:\n      predict_motion: true\n      stop_turn_radps: 0\n  follower:\n    "
+      "rotate_in_place_heading_deg: "
       "30\nrobot:\n  start_heading_deg: -90\n  lidar:\n    beams: 361\n");
   EXPECT_DOUBLE_EQ(c.explore.max_sim_time_s, 120.0);
   EXPECT_NEAR(c.explore.initial_turn_rad, std::numbers::pi / 2, 1e-12);
   EXPECT_TRUE(c.explore.goals.return_to_start);
   EXPECT_TRUE(c.explore.goals.guard.predict_motion);
+  EXPECT_EQ(c.explore.goals.guard.stop_turn_radps, 0.0);
   EXPECT_NEAR(c.explore.follower.rotate_in_place_heading_rad, std::numbers::pi / 6, 1e-12);
   EXPECT_NEAR(c.robot.start_heading_rad, -std::numbers::pi / 2, 1e-12);
   EXPECT_EQ(c.robot.lidar.beams, 361);
