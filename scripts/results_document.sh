@@ -129,6 +129,11 @@ EXPLORE_BEHAVIOUR_COMMIT=aa6452d
 # exactly; one with them is stale.
 EXPLORE_STUCK_COMMIT=8a6e5c2
 EXPLORE_RETRY_COMMIT=137c2f9
+# 216716d (a robot the collision guard stops turns away from what stops it; the scan memory
+# that backing up is checked against ages only while the robot moves) changes only runs in
+# which the guard stopped the robot or the robot backed up (goals.guard_stops or
+# goals.recoveries above 0).
+EXPLORE_GUARD_COMMIT=216716d
 stale_runs() {
   local name f
   for name in "$@"; do
@@ -137,7 +142,9 @@ stale_runs() {
     if made_before "$EXPLORE_BEHAVIOUR_COMMIT" "$name" ||
       { made_before "$EXPLORE_STUCK_COMMIT" "$name" && grep -Eq '"recoveries": *[1-9]' "$f"; } ||
       { made_before "$EXPLORE_RETRY_COMMIT" "$name" &&
-        grep -Eq '"reachable_frontier_left": *[1-9]' "$f"; }; then
+        grep -Eq '"reachable_frontier_left": *[1-9]' "$f"; } ||
+      { made_before "$EXPLORE_GUARD_COMMIT" "$name" &&
+        grep -Eq '"(guard_stops|recoveries)": *[1-9]' "$f"; }; then
       printf '`%s` ' "$name"
     fi
   done
@@ -337,8 +344,8 @@ write_document() {
       echo "$EXPLORE_BEHAVIOUR_COMMIT: loop closures far from the estimate must stay the one best in a"
       echo "window three times that wide); or older than"
       echo "$EXPLORE_STUCK_COMMIT with a stuck recovery, or than $EXPLORE_RETRY_COMMIT with reachable frontier"
-      echo "left at the end (the runs those commits change), so not like-for-like with the other"
-      echo "runs: $stale"
+      echo "left at the end, or than $EXPLORE_GUARD_COMMIT with a guard stop or a stuck recovery (the runs"
+      echo "those commits change), so not like-for-like with the other runs: $stale"
       echo
     fi
     tables explore "${EXPLORE[@]}"
