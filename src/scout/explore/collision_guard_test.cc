@@ -14,10 +14,12 @@ namespace {
 constexpr double kRadius = 0.2;
 
 // Drives the command in small steps, each guarded by 'guard' (obstacles
-// moved into the new robot frame), and returns the closest approach.
+// moved into the new robot frame), and returns the closest approach; 'end'
+// (if given) gets where the robot ends up.
 template <typename Guard>
 double ClosestApproachGuardedBy(const Guard& guard, const VelocityCommand& command,
-                                const std::vector<Eigen::Vector2d>& obstacles, double duration_s) {
+                                const std::vector<Eigen::Vector2d>& obstacles, double duration_s,
+                                Eigen::Vector2d* end = nullptr) {
   Eigen::Vector2d pos(0, 0);
   double heading = 0.0;
   double closest = 1e9;
@@ -31,6 +33,7 @@ double ClosestApproachGuardedBy(const Guard& guard, const VelocityCommand& comma
     pos += g.command.linear_mps * dt * Eigen::Vector2d(std::cos(heading), std::sin(heading));
     for (const Eigen::Vector2d& p : obstacles) closest = std::min(closest, (p - pos).norm());
   }
+  if (end) *end = pos;
   return closest;
 }
 
@@ -96,19 +99,13 @@ TEST(CollisionGuardTest, AStoppedRobotTurnsAwayFromWhatStopsItAndDrivesOn) {
   // Driven with the guard for 3 s: the robot leaves, never touching the wall.
   // Keeping the follower's turn, it stands still.
   const auto drive = [&](const CollisionGuardOptions& o, double* closest) {
-    Eigen::Vector2d pos(0, 0);
-    double heading = 0.0;
-    *closest = 1e9;
-    for (double t = 0; t < 3.0; t += 0.01) {
-      std::vector<Eigen::Vector2d> local;
-      const Eigen::Rotation2Dd to_robot(-heading);
-      for (const Eigen::Vector2d& p : wall) local.push_back(to_robot * (p - pos));
-      const GuardedCommand c = GuardCommand(along_path, local, kRadius, o, 1.0);
-      heading += c.command.angular_radps * 0.01;
-      pos += c.command.linear_mps * 0.01 * Eigen::Vector2d(std::cos(heading), std::sin(heading));
-      for (const Eigen::Vector2d& p : wall) *closest = std::min(*closest, (p - pos).norm());
-    }
-    return pos.norm();
+    Eigen::Vector2d end;
+    *closest = ClosestApproachGuardedBy(
+        [&](const VelocityCommand& c, const std::vector<Eigen::Vector2d>& local) {
+          return GuardCommand(c, local, kRadius, o, 1.0);
+        },
+        along_path, wall, 3.0, &end);
+    return end.norm();
   };
   double closest = 0.0;
   EXPECT_GT(drive({}, &closest), 0.5);
