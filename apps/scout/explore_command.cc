@@ -170,6 +170,7 @@ nlohmann::json Summary(const ExploreArgs& args, const exploration::ExplorationLo
                 {"recoveries", r.counters.recoveries},
                 {"stuck_reselections", r.counters.stuck_reselections},
                 {"back_ups_blocked", r.counters.back_ups_blocked},
+                {"retraces", r.counters.retraces},
                 {"guard_stops", r.counters.guard_stops},
                 {"guard_steers", r.counters.guard_steers},
                 // null: not counted, the goal manager had not finished.

@@ -29,6 +29,8 @@ void Validate(const GoalManagerOptions& o) {
   CheckAtLeast(g, "back_up_look_behind_m", o.back_up_look_behind_m, 0.0);
   CheckAtLeast(g, "back_up_trail_m", o.back_up_trail_m, 0.0);
   CheckAtLeast(g, "back_up_trail_tolerance_m", o.back_up_trail_tolerance_m, 0.0);
+  CheckAtLeast(g, "retrace_m", o.retrace_m, 0.0);
+  CheckAtLeast(g, "retrace_clearance_m", o.retrace_clearance_m, 0.0);
   CheckAtLeast(g, "close_stuck_passage_radius_m", o.close_stuck_passage_radius_m, 0.0);
   CheckAtLeast(g, "goal_frontier_radius_m", o.goal_frontier_radius_m, 0.0);
   CheckAtLeast(g, "goal_switch_margin", o.goal_switch_margin, 0.0);
@@ -265,6 +267,7 @@ void GoalManager::BeginDriving(const Eigen::Vector2d& goal, const PlannedPath& p
 void GoalManager::EndGoal(ExploreState next) {
   moving_since_.reset();
   backing_up_since_.reset();
+  retracing_since_.reset();
   goal_.reset();
   follower_.Clear();
   state_ = next;
@@ -446,10 +449,6 @@ bool GoalManager::GuardRear(const ExploreInput& in, VelocityCommand* command) co
 
 namespace {
 
-// Spacing of the trail's points and of the centres checked against it: finer
-// than the 0.3 m tolerance by far; turning on the spot adds no point.
-constexpr double kTrailStep_m = 0.02;
-
 double DistanceToSegment(const Eigen::Vector2d& p, const Eigen::Vector2d& a,
                          const Eigen::Vector2d& b) {
   const Eigen::Vector2d ab = b - a;
@@ -462,31 +461,20 @@ double DistanceToSegment(const Eigen::Vector2d& p, const Eigen::Vector2d& a,
 
 bool GoalManager::OffTrail(const geometry::Rigid2d& pose) const {
   const double look_m = options_.back_up_look_behind_m;
-  if (look_m <= 0.0 || trail_.empty()) return false;
+  const std::deque<Eigen::Vector2d>& trail = trail_.points();
+  if (look_m <= 0.0 || trail.empty()) return false;
   const Eigen::Vector2d back(-std::cos(pose.theta()), -std::sin(pose.theta()));
   // Centres every trail step along the segment, its far end included.
-  const int steps = static_cast<int>(std::ceil(look_m / kTrailStep_m));
+  const int steps = static_cast<int>(std::ceil(look_m / Trail::kStep_m));
   for (int k = 1; k <= steps; ++k) {
     const Eigen::Vector2d c = pose.translation() + (look_m * k / steps) * back;
-    double nearest_m = (c - trail_.front()).norm();
-    for (size_t i = 1; i < trail_.size(); ++i) {
-      nearest_m = std::min(nearest_m, DistanceToSegment(c, trail_[i - 1], trail_[i]));
+    double nearest_m = (c - trail.front()).norm();
+    for (size_t i = 1; i < trail.size(); ++i) {
+      nearest_m = std::min(nearest_m, DistanceToSegment(c, trail[i - 1], trail[i]));
     }
     if (nearest_m > options_.back_up_trail_tolerance_m) return true;
   }
   return false;
-}
-
-void GoalManager::RecordTrail(const Eigen::Vector2d& position) {
-  if (options_.back_up_trail_m <= 0.0) return;
-  if (!trail_.empty() && (position - trail_.back()).norm() < kTrailStep_m) return;
-  if (!trail_.empty()) trail_length_m_ += (position - trail_.back()).norm();
-  trail_.push_back(position);
-  while (trail_.size() > 2 &&
-         trail_length_m_ - (trail_[1] - trail_[0]).norm() >= options_.back_up_trail_m) {
-    trail_length_m_ -= (trail_[1] - trail_[0]).norm();
-    trail_.pop_front();
-  }
 }
 
 void GoalManager::EndStuckGoal(const ExploreInput& in) {
@@ -509,20 +497,15 @@ void GoalManager::Drive(const ExploreInput& in, ExploreStatus& status) {
     if (blocked || (here - from).norm() >= options_.back_up_distance_m ||
         in.time_s - since_s >= options_.back_up_timeout_s) {
       backing_up_since_.reset();
-      moving_since_.reset();
-      if (options_.close_stuck_passage_radius_m > 0.0) {
-        // The passage closes with the next planning map (built by the
-        // selection FailGoal leads to).
-        stuck_places_.RecordFailure(from, in.submaps, *map_);
-        map_dirty_ = true;
-      }
-      EndStuckGoal(in);
-      return;
+      return EndRecovery(in, from);
     }
     status.command = back;
     return;
   }
-  RecordTrail(here);  // backing up adds nothing: back-ups in a row do not add up
+  if (retracing_since_) return Retrace(in, status);
+  // Backing up and retracing add nothing: recoveries in a row do not add up.
+  trail_.Record(here, options_.back_up_trail_m);
+  retrace_trail_.Record(here, options_.retrace_m);
   if (map_dirty_ && in.time_s - last_replan_s_ >= options_.replan_interval_s) {
     Replan(in);
     if (state_ != ExploreState::kDriving && state_ != ExploreState::kReturning) return;
@@ -550,15 +533,7 @@ void GoalManager::Drive(const ExploreInput& in, ExploreStatus& status) {
   }
   status.command = fs.command;
   const bool forward = status.command.linear_mps > 0.0;
-  if (in.obstacles) {
-    const GuardedCommand g =
-        GuardCommand(status.command, *in.obstacles, map_->options().robot_radius_m, options_.guard,
-                     follower_.options().max_angular_speed_radps, in.base ? &*in.base : nullptr);
-    status.command = g.command;
-    counters_.guard_steers += g.steered;
-    if (g.stopped && !guard_stopped_) ++counters_.guard_stops;
-    guard_stopped_ = g.stopped;
-  }
+  Guard(in, &status.command);
   // Commanded forward without moving (stuck against something, or held by
   // the guard while turning does not clear the way).
   if (!forward) {
@@ -569,10 +544,80 @@ void GoalManager::Drive(const ExploreInput& in, ExploreStatus& status) {
   } else if (options_.stuck_timeout_s > 0.0 &&
              in.time_s - moving_since_->first >= options_.stuck_timeout_s) {
     ++counters_.recoveries;
-    backing_up_since_ = {in.time_s, here};
     status.command = {};
+    // Stuck again where the last back-up began: backing up did not help.
+    const bool again =
+        last_stuck_at_ && (here - *last_stuck_at_).norm() <= options_.back_up_distance_m;
+    last_stuck_at_ = here;
     VelocityCommand back{-options_.back_up_speed_mps, 0.0};
-    if (!BlockedBehind(in.robot_pose) && !GuardRear(in, &back)) status.command = back;
+    const bool blocked = BlockedBehind(in.robot_pose) || GuardRear(in, &back);
+    if ((blocked || again) && StartRetrace(in)) return;
+    if (!blocked) status.command = back;
+    backing_up_since_ = {in.time_s, here};
+  }
+}
+
+void GoalManager::Guard(const ExploreInput& in, VelocityCommand* command, double clearance_m) {
+  if (!in.obstacles) return;
+  CollisionGuardOptions guard = options_.guard;
+  guard.clearance_m = std::min(guard.clearance_m, clearance_m);
+  const GuardedCommand g =
+      GuardCommand(*command, *in.obstacles, map_->options().robot_radius_m, guard,
+                   follower_.options().max_angular_speed_radps, in.base ? &*in.base : nullptr);
+  *command = g.command;
+  counters_.guard_steers += g.steered;
+  if (g.stopped && !guard_stopped_) ++counters_.guard_stops;
+  guard_stopped_ = g.stopped;
+}
+
+void GoalManager::EndRecovery(const ExploreInput& in, const Eigen::Vector2d& from) {
+  moving_since_.reset();
+  if (options_.close_stuck_passage_radius_m > 0.0) {
+    // The passage closes with the next planning map (built by the
+    // selection FailGoal leads to).
+    stuck_places_.RecordFailure(from, in.submaps, *map_);
+    map_dirty_ = true;
+  }
+  EndStuckGoal(in);
+}
+
+bool GoalManager::StartRetrace(const ExploreInput& in) {
+  // Only a way back that leads at least a back-up's length away is worth
+  // leaving the goal's path for.
+  if (options_.retrace_m <= 0.0 || retrace_trail_.empty() ||
+      (retrace_trail_.points().front() - in.robot_pose.translation()).norm() <
+          options_.back_up_distance_m) {
+    return false;
+  }
+  ++counters_.retraces;
+  moving_since_.reset();
+  retracing_since_ = {in.time_s, in.robot_pose.translation()};
+  // The goal's path is given up; the goal ends when the retrace does.
+  follower_.SetPath(retrace_trail_.Reversed(in.robot_pose.translation()));
+  return true;
+}
+
+void GoalManager::Retrace(const ExploreInput& in, ExploreStatus& status) {
+  const Eigen::Vector2d here = in.robot_pose.translation();
+  const Eigen::Vector2d from = retracing_since_->second;
+  const FollowStatus fs = follower_.Update(in.robot_pose);
+  // Stuck on the way back too (the same rule as on a goal's path): it ends
+  // like a back-up that could go no farther.
+  const bool stuck = moving_since_ && options_.stuck_timeout_s > 0.0 &&
+                     in.time_s - moving_since_->first >= options_.stuck_timeout_s;
+  const bool too_long = in.time_s - retracing_since_->first > options_.progress_timeout_s;
+  if (fs.reached || stuck || too_long) {
+    retracing_since_.reset();
+    retrace_trail_.Clear();
+    return EndRecovery(in, from);
+  }
+  status.command = fs.command;
+  Guard(in, &status.command, options_.retrace_clearance_m);
+  if (status.command.linear_mps <= 0.0 && fs.command.linear_mps <= 0.0) {
+    moving_since_.reset();  // turning to face the way back
+  } else if (!moving_since_ ||
+             (here - moving_since_->second).norm() >= options_.stuck_min_motion_m) {
+    moving_since_ = {in.time_s, here};
   }
 }
 

@@ -2,8 +2,8 @@
 #define SCOUT_EXPLORE_GOAL_MANAGER_H_
 
 #include <Eigen/Core>
-#include <deque>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string_view>
@@ -18,6 +18,7 @@
 #include "scout/explore/path_planner.h"
 #include "scout/explore/planning_map.h"
 #include "scout/explore/start_region.h"
+#include "scout/explore/trail.h"
 #include "scout/geometry/rigid_transform.h"
 #include "scout/grid/occupancy_map.h"
 
@@ -89,6 +90,27 @@ struct GoalManagerOptions {
   // SLAM drift) where it had 1.000.
   double back_up_trail_m = 0.0;
   double back_up_trail_tolerance_m = 0.3;
+  // When the robot gets stuck and cannot back up (something mapped or seen
+  // right behind it), or gets stuck again within back_up_distance_m of where
+  // it last got stuck (backing up did not help), it drives back along the
+  // way it came instead: the last retrace_m metres it drove (backing up and
+  // retracing add nothing), turning round first and with the guard on; then
+  // the goal is selected afresh or fails as after a back-up. The disc fit
+  // along that way in the world. Office seed 13 otherwise stood in a pocket
+  // between a desk and a wall from 820 s to the end (no_progress at coverage
+  // 0.868): facing the way out, with every arc it could steer passing a
+  // corner closer than the guard allows, and the wall behind it; with 2 m it
+  // completes. 0 (the default): off. Off until the evaluation is made with
+  // it: it changes every run with a blocked back-up or a second recovery at
+  // one place, and on office seeds 1-14 it traded seed 13's deadlock for two
+  // runs whose SLAM drifted on their new trajectories (docs/EXPERIMENTS.md).
+  double retrace_m = 0.0;
+  // The collision guard's clearance while retracing, if smaller than its
+  // own (guard.clearance_m): that way was driven, so only what the lidar
+  // sees on it now should stop the robot. With the guard's 3 cm the robot
+  // did not leave office seed 13's pocket, a few mm closer to a corner on
+  // the way out than it had been on the way in.
+  double retrace_clearance_m = 0.01;
   // Where the robot got stuck (the back-up began), the narrow-passage cells
   // within this radius (metres) are closed to planning; they reopen, as
   // failed goals do, when the map around them changes (failed_goals' retry
@@ -174,6 +196,7 @@ struct ExploreCounters {
   int recoveries = 0;          // back-ups after the robot got stuck (closing its passage)
   int stuck_reselections = 0;  // ... after which the goal was selected afresh, not failed
   int back_ups_blocked = 0;  // ... that stopped early (a mapped obstacle behind, or off the trail)
+  int retraces = 0;          // ... that drove back the way it came instead (retrace_m)
   int guard_stops = 0;       // the collision guard stopped a forward command
   int guard_steers = 0;      // control cycles it steered another arc instead
 };
@@ -295,9 +318,18 @@ class GoalManager {
   // True when a centre on the segment back_up_look_behind_m behind 'pose' is
   // farther than back_up_trail_tolerance_m from trail_; false without a trail.
   bool OffTrail(const geometry::Rigid2d& pose) const;
-  // Adds where the robot is (not backing up) to trail_, keeping the last
-  // back_up_trail_m of it.
-  void RecordTrail(const Eigen::Vector2d& position);
+  // Starts driving back along retrace_trail_ when it is long enough; false
+  // otherwise.
+  bool StartRetrace(const ExploreInput& in);
+  // Follows the retrace in progress; ends it (as a back-up ends) at its end
+  // or when the robot gets stuck on it.
+  void Retrace(const ExploreInput& in, ExploreStatus& status);
+  // Checks a forward 'command' against the latest scan (options_.guard).
+  void Guard(const ExploreInput& in, VelocityCommand* command,
+             double clearance_m = std::numeric_limits<double>::infinity());
+  // After a back-up or retrace that began at 'from': closes the passage
+  // there and ends the goal (EndStuckGoal).
+  void EndRecovery(const ExploreInput& in, const Eigen::Vector2d& from);
   void Drive(const ExploreInput& input, ExploreStatus& status);
   // Returns the distance from 'goal' to the nearest frontier point.
   static double DistanceToFrontier(const Eigen::Vector2d& goal,
@@ -334,10 +366,15 @@ class GoalManager {
   // forward; and the back-up in progress, if any.
   std::optional<std::pair<double, Eigen::Vector2d>> moving_since_;
   std::optional<std::pair<double, Eigen::Vector2d>> backing_up_since_;
-  // Where the robot drove recently other than backing up (global positions
-  // 2 cm apart or more, oldest first) and that path's length.
-  std::deque<Eigen::Vector2d> trail_;
-  double trail_length_m_ = 0.0;
+  // Where the robot drove recently other than backing up: the last
+  // back_up_trail_m (trail_) and the last retrace_m (retrace_trail_, not
+  // added to while retracing it).
+  Trail trail_;
+  Trail retrace_trail_;
+  // Where the robot last got stuck, if ever.
+  std::optional<Eigen::Vector2d> last_stuck_at_;
+  // The retrace in progress, if any: when and where it began.
+  std::optional<std::pair<double, Eigen::Vector2d>> retracing_since_;
   bool guard_stopped_ = false;
   std::optional<double> empty_since_s_;
   int frontier_left_ = 0;

@@ -302,6 +302,98 @@ TEST(GoalManagerTest, BackingUpStaysNearThePathDriven) {
   EXPECT_EQ(blocked, 0);
 }
 
+// Stuck with no way to back up, or stuck again where the last back-up began:
+// the robot drives back the way it came (turning round first; the lidar sees
+// ahead), then selects afresh. With retrace_m 0 it only tries to back up.
+TEST(GoalManagerTest, StuckRobotThatCannotBackUpRetracesTheWayItCame) {
+  Room room;
+  const Eigen::Vector2d from = room.b.At(10, 20), stuck_at = room.b.At(30, 20);
+  // A wall across the robot's back, in the robot frame (behind: -x).
+  std::vector<Eigen::Vector2d> wall_behind;
+  for (double y = -0.4; y <= 0.4; y += 0.02) wall_behind.emplace_back(-0.22, y);
+  for (const double retrace_m : {2.0, 0.0}) {
+    GoalManagerOptions o;  // stuck recovery on
+    o.retrace_m = retrace_m;
+    GoalManager gm = MakeManager(o);
+    gm.Start();
+    double t = 0.0;
+    const auto update = [&](const Eigen::Vector2d& at, double heading) {
+      ExploreInput in = room.Input(t += 0.1, at, false);
+      in.robot_pose = geometry::Rigid2d(at, heading);
+      in.recent_returns = [&] { return wall_behind; };
+      return gm.Update(in);
+    };
+    ExploreStatus s = gm.Update(room.Input(t, from, true));
+    ASSERT_EQ(s.state, ExploreState::kDriving);
+    for (double f = 0.0; f <= 1.0; f += 0.02) s = update(from + f * (stuck_at - from), 0.0);
+    for (int k = 0; k < 40 && gm.counters().recoveries == 0; ++k) s = update(stuck_at, 0.0);
+    ASSERT_EQ(gm.counters().recoveries, 1);
+    EXPECT_GE(s.command.linear_mps, 0.0) << "never reverses into the wall";
+    if (retrace_m == 0.0) {
+      s = update(stuck_at, 0.0);
+      EXPECT_EQ(gm.counters().back_ups_blocked, 1);
+      EXPECT_EQ(gm.counters().retraces, 0);
+      EXPECT_EQ(s.state, ExploreState::kPlanning);
+      continue;
+    }
+    EXPECT_EQ(gm.counters().retraces, 1);
+    EXPECT_EQ(gm.counters().back_ups_blocked, 0);
+    // Facing the wall's other side: it turns on the spot first.
+    s = update(stuck_at, 0.0);
+    EXPECT_EQ(s.state, ExploreState::kDriving);
+    EXPECT_EQ(s.command.linear_mps, 0.0);
+    EXPECT_NE(s.command.angular_radps, 0.0);
+    // Turned round, it drives forward along its own way back, 2 m of it.
+    Eigen::Vector2d robot = stuck_at;
+    for (int k = 0; k < 400 && s.state == ExploreState::kDriving; ++k) {
+      s = update(robot, M_PI);
+      if (s.state != ExploreState::kDriving) break;
+      ASSERT_GT(s.command.linear_mps, 0.0) << k;
+      EXPECT_LT(std::abs(s.command.angular_radps), 0.05) << k;
+      robot.x() -= 0.02;
+    }
+    EXPECT_EQ(s.state, ExploreState::kPlanning);
+    EXPECT_NEAR((stuck_at - robot).norm(), retrace_m, 0.3);
+    EXPECT_EQ(gm.counters().stuck_reselections, 1);
+    EXPECT_EQ(gm.counters().goals_failed, 0);
+  }
+}
+
+TEST(GoalManagerTest, StuckAgainWhereTheBackUpBeganRetracesTheWayItCame) {
+  Room room;
+  const Eigen::Vector2d from = room.b.At(10, 20), stuck_at = room.b.At(30, 20);
+  GoalManagerOptions o;  // stuck recovery on, nothing behind the robot
+  o.retrace_m = 2.0;
+  GoalManager gm = MakeManager(o);
+  gm.Start();
+  double t = 0.0;
+  ExploreStatus s = gm.Update(room.Input(t, from, true));
+  const auto drive_and_get_stuck = [&](const Eigen::Vector2d& start) {
+    for (double f = 0.0; f <= 1.0; f += 0.02) {
+      s = gm.Update(room.Input(t += 0.1, start + f * (stuck_at - start), false));
+    }
+    const int before = gm.counters().recoveries;
+    for (int k = 0; k < 40 && gm.counters().recoveries == before; ++k) {
+      s = gm.Update(room.Input(t += 0.1, stuck_at, false));
+    }
+  };
+  drive_and_get_stuck(from);
+  ASSERT_EQ(gm.counters().recoveries, 1);
+  EXPECT_LT(s.command.linear_mps, 0.0) << "the first time it backs up";
+  Eigen::Vector2d robot = stuck_at;
+  while (s.command.linear_mps < 0.0) {
+    robot.x() -= 0.02;
+    s = gm.Update(room.Input(t += 0.1, robot, false));
+  }
+  EXPECT_EQ(gm.counters().retraces, 0);
+  s = gm.Update(room.Input(t += 0.1, robot, false));
+  ASSERT_EQ(s.state, ExploreState::kDriving);  // the same goal, selected afresh
+  drive_and_get_stuck(robot);
+  EXPECT_EQ(gm.counters().recoveries, 2);
+  EXPECT_EQ(gm.counters().retraces, 1);
+  EXPECT_GE(s.command.linear_mps, 0.0);
+}
+
 TEST(GoalManagerTest, FailedGoalMovesWithItsSubmapAndIsRetriedAfterTheMapChanges) {
   Room room;
   GoalManager gm = MakeManager();

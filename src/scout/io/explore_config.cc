@@ -26,6 +26,8 @@ void ReadGoals(YamlSection s, explore::GoalManagerOptions* o) {
   s.ReadNonNegativeAtMost("back_up_look_behind_m", &o->back_up_look_behind_m, 5.0);
   s.ReadNonNegativeAtMost("back_up_trail_m", &o->back_up_trail_m, 100.0);
   s.ReadNonNegativeAtMost("back_up_trail_tolerance_m", &o->back_up_trail_tolerance_m, 10.0);
+  s.ReadNonNegativeAtMost("retrace_m", &o->retrace_m, 100.0);
+  s.ReadNonNegativeAtMost("retrace_clearance_m", &o->retrace_clearance_m, 1.0);
   s.ReadNonNegativeAtMost("close_stuck_passage_radius_m", &o->close_stuck_passage_radius_m, 10.0);
   s.ReadNonNegativeAtMost("goal_frontier_radius_m", &o->goal_frontier_radius_m, 10.0);
   s.ReadNonNegative("goal_switch_margin", &o->goal_switch_margin);
