@@ -109,6 +109,11 @@ void GoalManager::Stop() {
   state_ = ExploreState::kIdle;
   goal_.reset();
   follower_.Clear();
+  // A recovery under way ends with the goal: after Start() the robot drives
+  // to its next goal, not on backing up or retracing.
+  moving_since_.reset();
+  backing_up_since_.reset();
+  retracing_since_.reset();
 }
 
 std::vector<Eigen::Vector2d> GoalManager::FrontierInBoundary(

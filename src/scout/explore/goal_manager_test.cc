@@ -394,6 +394,49 @@ TEST(GoalManagerTest, StuckAgainWhereTheBackUpBeganRetracesTheWayItCame) {
   EXPECT_GE(s.command.linear_mps, 0.0);
 }
 
+// Stopped in the middle of a recovery, then started again: the robot drives
+// to its next goal instead of going on with the back-up or the retrace.
+TEST(GoalManagerTest, StopEndsARecoveryUnderWay) {
+  Room room;
+  const Eigen::Vector2d from = room.b.At(10, 20), stuck_at = room.b.At(30, 20);
+  for (const bool retrace : {false, true}) {
+    GoalManagerOptions o;  // stuck recovery on
+    if (retrace) o.retrace_m = 2.0;
+    GoalManager gm = MakeManager(o);
+    gm.Start();
+    double t = 0.0;
+    ExploreStatus s = gm.Update(room.Input(t, from, true));
+    for (double f = 0.0; f <= 1.0; f += 0.02) {
+      s = gm.Update(room.Input(t += 0.1, from + f * (stuck_at - from), false));
+    }
+    for (int k = 0; k < 40 && gm.counters().recoveries == 0; ++k) {
+      s = gm.Update(room.Input(t += 0.1, stuck_at, false));
+    }
+    ASSERT_EQ(gm.counters().recoveries, 1);
+    if (retrace) {
+      // Stuck again where it got stuck: it retraces, turning round first.
+      s = gm.Update(room.Input(t += 0.1, stuck_at, false));
+      while (s.command.linear_mps < 0.0) s = gm.Update(room.Input(t += 0.1, stuck_at, false));
+      for (int k = 0; k < 80 && gm.counters().retraces == 0; ++k) {
+        s = gm.Update(room.Input(t += 0.1, stuck_at, false));
+      }
+      ASSERT_EQ(gm.counters().retraces, 1);
+      s = gm.Update(room.Input(t += 0.1, stuck_at, false));
+      ASSERT_EQ(s.command.linear_mps, 0.0);
+      ASSERT_NE(s.command.angular_radps, 0.0);  // turning to face the way back
+    } else {
+      ASSERT_LT(s.command.linear_mps, 0.0);  // backing up
+    }
+    gm.Stop();
+    gm.Start();
+    s = gm.Update(room.Input(t += 0.1, stuck_at, true));
+    ASSERT_EQ(s.state, ExploreState::kDriving);
+    s = gm.Update(room.Input(t += 0.1, stuck_at, false));
+    EXPECT_GT(s.command.linear_mps, 0.0) << "on to the frontier ahead (+x)";
+    EXPECT_LT(std::abs(s.command.angular_radps), 0.5);
+  }
+}
+
 TEST(GoalManagerTest, FailedGoalMovesWithItsSubmapAndIsRetriedAfterTheMapChanges) {
   Room room;
   GoalManager gm = MakeManager();
