@@ -278,6 +278,9 @@ TEST_F(ExploreCli, ExploresASmallMapAndWritesEveryOutput) {
   EXPECT_EQ(status["collisions"], 0);
   EXPECT_EQ(status["goals"]["issued"], s["goals"]["issued"]);
   EXPECT_EQ(status["goals"]["reached"], s["goals"]["reached"]);
+  for (const char* counter : {"recoveries", "retraces", "guard_stops"}) {
+    EXPECT_EQ(status["goals"][counter], s["goals"][counter]) << counter;
+  }
   EXPECT_EQ(status["frontier_points"], 0);  // explored completely
   EXPECT_EQ(status["blacklisted_goals"].size(), static_cast<size_t>(blacklisted));
   const Eigen::Vector2d estimated(status["pose"]["x_m"].get<double>(),

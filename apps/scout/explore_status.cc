@@ -98,7 +98,11 @@ nlohmann::ordered_json ExploreStatusFile::ToJson(
                      {"reached", p.counters.goals_reached},
                      {"failed", p.counters.goals_failed},
                      {"no_plan", p.counters.goals_unreachable},
-                     {"superseded", p.counters.goals_superseded}};
+                     {"superseded", p.counters.goals_superseded},
+                     // A robot that struggles shows here before goals fail.
+                     {"recoveries", p.counters.recoveries},
+                     {"retraces", p.counters.retraces},
+                     {"guard_stops", p.counters.guard_stops}};
   nlohmann::ordered_json blacklisted = nlohmann::ordered_json::array();
   for (const Eigen::Vector2d& b : p.blacklisted_goals) blacklisted.push_back(PointJson(b));
   status["blacklisted_goals"] = blacklisted;
