@@ -541,13 +541,7 @@ void GoalManager::Drive(const ExploreInput& in, ExploreStatus& status) {
   Guard(in, &status.command);
   // Commanded forward without moving (stuck against something, or held by
   // the guard while turning does not clear the way).
-  if (!forward) {
-    moving_since_.reset();
-  } else if (!moving_since_ ||
-             (here - moving_since_->second).norm() >= options_.stuck_min_motion_m) {
-    moving_since_ = {in.time_s, here};
-  } else if (options_.stuck_timeout_s > 0.0 &&
-             in.time_s - moving_since_->first >= options_.stuck_timeout_s) {
+  if (StuckAfterMotion(forward, in)) {
     ++counters_.recoveries;
     status.command = {};
     // Stuck again where the last back-up began: backing up did not help.
@@ -603,7 +597,6 @@ bool GoalManager::StartRetrace(const ExploreInput& in) {
 }
 
 void GoalManager::Retrace(const ExploreInput& in, ExploreStatus& status) {
-  const Eigen::Vector2d here = in.robot_pose.translation();
   const Eigen::Vector2d from = retracing_since_->second;
   const FollowStatus fs = follower_.Update(in.robot_pose);
   // Stuck on the way back too (the same rule as on a goal's path): it ends
@@ -618,12 +611,24 @@ void GoalManager::Retrace(const ExploreInput& in, ExploreStatus& status) {
   }
   status.command = fs.command;
   Guard(in, &status.command, options_.retrace_clearance_m);
-  if (status.command.linear_mps <= 0.0 && fs.command.linear_mps <= 0.0) {
-    moving_since_.reset();  // turning to face the way back
+  // Turning to face the way back is not being stuck. The guard passes
+  // commands that are not forward unchanged. Being stuck ends the retrace at
+  // the next update (above).
+  StuckAfterMotion(fs.command.linear_mps > 0.0, in);
+}
+
+bool GoalManager::StuckAfterMotion(bool forward, const ExploreInput& in) {
+  const Eigen::Vector2d here = in.robot_pose.translation();
+  if (!forward) {
+    moving_since_.reset();
   } else if (!moving_since_ ||
              (here - moving_since_->second).norm() >= options_.stuck_min_motion_m) {
     moving_since_ = {in.time_s, here};
+  } else {
+    return options_.stuck_timeout_s > 0.0 &&
+           in.time_s - moving_since_->first >= options_.stuck_timeout_s;
   }
+  return false;
 }
 
 ExploreStatus GoalManager::Update(const ExploreInput& in) {

@@ -324,6 +324,10 @@ class GoalManager {
   // Follows the retrace in progress; ends it (as a back-up ends) at its end
   // or when the robot gets stuck on it.
   void Retrace(const ExploreInput& in, ExploreStatus& status);
+  // Tracks where and when the robot last moved stuck_min_motion_m while
+  // commanded 'forward' (moving_since_; reset when not forward); true once it
+  // has been commanded forward without moving that far for stuck_timeout_s.
+  bool StuckAfterMotion(bool forward, const ExploreInput& in);
   // Checks a forward 'command' against the latest scan (options_.guard).
   void Guard(const ExploreInput& in, VelocityCommand* command,
              double clearance_m = std::numeric_limits<double>::infinity());
