@@ -134,6 +134,9 @@ EXPLORE_RETRY_COMMIT=137c2f9
 # which the guard stopped the robot or the robot backed up (goals.guard_stops or
 # goals.recoveries above 0).
 EXPLORE_GUARD_COMMIT=216716d
+# 512946f (navigation points weigh information gain 1 instead of 3) changes the runs of the two
+# policies that rank by it, scout and meanshift-centres; nearest and explore-lite are as before.
+EXPLORE_POLICY_COMMIT=512946f
 stale_runs() {
   local name f
   for name in "$@"; do
@@ -144,7 +147,9 @@ stale_runs() {
       { made_before "$EXPLORE_RETRY_COMMIT" "$name" &&
         grep -Eq '"reachable_frontier_left": *[1-9]' "$f"; } ||
       { made_before "$EXPLORE_GUARD_COMMIT" "$name" &&
-        grep -Eq '"(guard_stops|recoveries)": *[1-9]' "$f"; }; then
+        grep -Eq '"(guard_stops|recoveries)": *[1-9]' "$f"; } ||
+      { made_before "$EXPLORE_POLICY_COMMIT" "$name" &&
+        grep -Eq '"goals_policy": *"(scout|meanshift-centres)"' "$f"; }; then
       printf '`%s` ' "$name"
     fi
   done
