@@ -349,8 +349,9 @@ write_document() {
       echo "$EXPLORE_BEHAVIOUR_COMMIT: loop closures far from the estimate must stay the one best in a"
       echo "window three times that wide); or older than"
       echo "$EXPLORE_STUCK_COMMIT with a stuck recovery, or than $EXPLORE_RETRY_COMMIT with reachable frontier"
-      echo "left at the end, or than $EXPLORE_GUARD_COMMIT with a guard stop or a stuck recovery (the runs"
-      echo "those commits change), so not like-for-like with the other runs: $stale"
+      echo "left at the end, or than $EXPLORE_GUARD_COMMIT with a guard stop or a stuck recovery, or than"
+      echo "$EXPLORE_POLICY_COMMIT for the scout and meanshift-centres policies (information gain weighed"
+      echo "1 instead of 3; the runs those commits change), so not like-for-like with the other runs: $stale"
       echo
     fi
     tables explore "${EXPLORE[@]}"
