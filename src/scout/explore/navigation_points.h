@@ -27,7 +27,8 @@ struct NavigationPointOptions {
   // (and ALGORITHMS §6) use 3; with 1 a point of the most unknown area (π m²
   // at 1 m) is worth a detour of about 3 m instead of 9, so the robot leaves
   // fewer pockets behind to come back for (docs/EXPERIMENTS.md: office path to
-  // 99 % 0.91 of the default's, willow-garage 5 of 5 seeds at >= 97 %).
+  // 99 % 0.91 of what it was with 3; museum 1.02 and ucsd-atkinson-1f's SLAM
+  // worse).
   double info_multiplier = 1.0;
   // Points within this radius (metres) of the current goal get their info gain
   // multiplied by hysteresis_gain, so the robot does not switch goals for a
