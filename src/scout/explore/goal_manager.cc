@@ -601,8 +601,7 @@ void GoalManager::Retrace(const ExploreInput& in, ExploreStatus& status) {
   const FollowStatus fs = follower_.Update(in.robot_pose);
   // Stuck on the way back too (the same rule as on a goal's path): it ends
   // like a back-up that could go no farther.
-  const bool stuck = moving_since_ && options_.stuck_timeout_s > 0.0 &&
-                     in.time_s - moving_since_->first >= options_.stuck_timeout_s;
+  const bool stuck = StuckTimedOut(in.time_s);
   const bool too_long = in.time_s - retracing_since_->first > options_.progress_timeout_s;
   if (fs.reached || stuck || too_long) {
     retracing_since_.reset();
@@ -625,10 +624,14 @@ bool GoalManager::StuckAfterMotion(bool forward, const ExploreInput& in) {
              (here - moving_since_->second).norm() >= options_.stuck_min_motion_m) {
     moving_since_ = {in.time_s, here};
   } else {
-    return options_.stuck_timeout_s > 0.0 &&
-           in.time_s - moving_since_->first >= options_.stuck_timeout_s;
+    return StuckTimedOut(in.time_s);
   }
   return false;
+}
+
+bool GoalManager::StuckTimedOut(double time_s) const {
+  return moving_since_ && options_.stuck_timeout_s > 0.0 &&
+         time_s - moving_since_->first >= options_.stuck_timeout_s;
 }
 
 ExploreStatus GoalManager::Update(const ExploreInput& in) {

@@ -328,6 +328,8 @@ class GoalManager {
   // commanded 'forward' (moving_since_; reset when not forward); true once it
   // has been commanded forward without moving that far for stuck_timeout_s.
   bool StuckAfterMotion(bool forward, const ExploreInput& in);
+  // True once moving_since_ is stuck_timeout_s old (a timeout of 0 never).
+  bool StuckTimedOut(double time_s) const;
   // Checks a forward 'command' against the latest scan (options_.guard).
   void Guard(const ExploreInput& in, VelocityCommand* command,
              double clearance_m = std::numeric_limits<double>::infinity());
