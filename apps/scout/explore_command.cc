@@ -165,6 +165,7 @@ nlohmann::json Summary(const ExploreArgs& args, const exploration::ExplorationLo
                 {"superseded", r.counters.goals_superseded},
                 {"seen_before_arrival", r.counters.goals_seen},
                 {"dropped", r.counters.goals_dropped},
+                {"contradicted_by_scan", r.counters.goals_contradicted},
                 {"retried", r.counters.goals_retried},
                 {"escapes", r.counters.escapes},
                 {"recoveries", r.counters.recoveries},
@@ -390,11 +391,13 @@ int RunExplore(const ExploreArgs& args) {
   for (const exploration::IssuedGoal& g : result.goals) {
     if (g.map_then == nullptr) continue;
     const std::string name = "unreachable-goal-" + std::to_string(++snapshots);
-    io::WritePlanPicture(*g.map_then, {g.robot_map, g.goal_map, g.target_map, g.path_map},
+    io::WritePlanPicture(*g.map_then,
+                         {g.robot_map, g.goal_map, g.target_map, g.path_map, g.scan_map},
                          out.Stage(name + ".png"));
     // The same goal in the true world, where the scans that mapped it put
     // it: shows which wall the map had wrong.
-    io::WritePlanPicture(loop.world().map, {g.robot_world, g.goal_world, g.target_world, {}},
+    io::WritePlanPicture(loop.world().map,
+                         {g.robot_world, g.goal_world, g.target_world, {}, g.scan_world},
                          out.Stage(name + "-truth.png"));
     std::cerr << "explore: unreachable goal " << snapshots << " at t=" << g.sim_time_s
               << " s: robot at (" << g.robot_world.x() << ", " << g.robot_world.y() << ") sent to ("

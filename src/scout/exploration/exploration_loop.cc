@@ -332,6 +332,13 @@ void ExplorationLoop::RecordIssuedGoal(const Eigen::Vector2d& goal_map,
   if (!g.reachable_in_truth && result_.unreachable_goals < kMaxUnreachableSnapshots) {
     g.map_then = std::make_shared<const grid::OccupancyMap>(fused_map_);
     g.path_map = path_map;
+    const geometry::Rigid2d map_from_scan =
+        EstimatedPose() * LocalPose().inverse() * latest_scan_local_pose_;
+    const geometry::Rigid2d world_from_scan = result_.truth.back().pose;
+    for (const Eigen::Vector2d& p : latest_returns_) {
+      g.scan_map.push_back(map_from_scan * p);
+      g.scan_world.push_back(world_from_scan * p);
+    }
   }
   result_.unreachable_goals += !g.reachable_in_truth;
   result_.unreachable_points += !g.point_reachable_in_truth;

@@ -71,6 +71,10 @@ struct IssuedGoal {
   // so the picture of what the robot believed outlives later optimisations.
   std::shared_ptr<const grid::OccupancyMap> map_then;
   std::vector<Eigen::Vector2d> path_map;
+  // ... and the returns of the latest scan then, placed in the map by the
+  // estimated pose and in the world by the true one.
+  std::vector<Eigen::Vector2d> scan_map;
+  std::vector<Eigen::Vector2d> scan_world;
 };
 
 inline constexpr int kMaxUnreachableSnapshots = 3;

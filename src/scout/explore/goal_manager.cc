@@ -9,6 +9,7 @@
 
 #include "scout/common/parallel.h"
 #include "scout/explore/option_check.h"
+#include "scout/explore/scan_contradiction.h"
 #include "scout/explore/stand_off.h"
 
 namespace scout::explore {
@@ -36,6 +37,7 @@ void Validate(const GoalManagerOptions& o) {
   CheckAtLeast(g, "goal_switch_margin", o.goal_switch_margin, 0.0);
   CheckAtLeast(g, "goal_match_radius_m", o.goal_match_radius_m, 0.0);
   CheckAtLeast(g, "max_stand_off_m", o.max_stand_off_m, 0.0);
+  CheckAtLeast(g, "scan_check_radius_m", o.scan_check_radius_m, 0.0);
   Validate(o.guard);
   if (!o.boundary.empty() && o.boundary.size() < 3) {
     RejectOption(g, "boundary", "no vertices or at least 3 vertices",
@@ -232,11 +234,26 @@ GoalManager::Selection GoalManager::PlanFirst(const std::vector<GoalCandidate>& 
       failed_.RecordFailure(c.position, in.submaps, *map_);
       continue;
     }
+    if (ContradictedByScan(*path, in)) {
+      ++counters_.goals_contradicted;
+      failed_.RecordFailure(c.position, in.submaps, *map_);
+      continue;
+    }
     sel.goal = c.position;
     sel.path = std::move(path);
     break;
   }
   return sel;
+}
+
+bool GoalManager::ContradictedByScan(const PlannedPath& path, const ExploreInput& in) const {
+  if (options_.scan_check_radius_m <= 0.0 || in.obstacles == nullptr) return false;
+  const std::vector<Eigen::Vector2d> driven = CutAtStandOff(
+      *map_, path.points, options_.max_stand_off_m, follower_.options().goal_tolerance_m);
+  std::vector<Eigen::Vector2d> returns;
+  returns.reserve(in.obstacles->size());
+  for (const Eigen::Vector2d& q : *in.obstacles) returns.push_back(in.robot_pose * q);
+  return PathCrossesReturns(driven, returns, options_.scan_check_radius_m);
 }
 
 GoalManager::Selection GoalManager::SelectAndPlan(const ExploreInput& in) {
@@ -392,7 +409,13 @@ void GoalManager::Replan(const ExploreInput& in) {
   }
   // Keep the goal; only its path changes with the map.
   if (std::optional<PlannedPath> path = planner_.Plan(*map_, *ranking.reach.start, current)) {
-    return BeginDriving(current, *path, in, ExploreState::kDriving, /*new_goal=*/false);
+    if (!ContradictedByScan(*path, in)) {
+      return BeginDriving(current, *path, in, ExploreState::kDriving, /*new_goal=*/false);
+    }
+    // The way there runs into what the lidar sees now.
+    ++counters_.goals_contradicted;
+    failed_.RecordFailure(current, in.submaps, *map_);
+    return EndGoal(ExploreState::kPlanning);
   }
   if (map_->NearestTraversable(current, map_->options().goal_snap_radius_m)) {
     // The map now blocks every way there.

@@ -130,6 +130,15 @@ struct GoalManagerOptions {
   // leaves no room at a stop that keeps only the narrow margin (see
   // CutAtStandOff). 0 drives to the goal itself.
   double max_stand_off_m = 0.5;
+  // A plan whose path (to the stand-off point) passes within this distance
+  // (metres) of a return of the latest scan (ExploreInput::obstacles) is
+  // not driven: the goal counts as without a plan (blacklisted until the
+  // map around it changes). The lidar sees a wall where the map, fused
+  // from submaps a loop closure may have left misplaced, shows a way (see
+  // PathCrossesReturns). Paths keep at least the narrow margin plus the
+  // robot radius from mapped walls, so walls mapped within that minus this
+  // of where the lidar sees them pass. 0: off.
+  double scan_check_radius_m = 0.15;
   // Forward commands are checked against the latest scan (ExploreInput::
   // obstacles): see CollisionGuardOptions.
   CollisionGuardOptions guard;
@@ -184,13 +193,14 @@ struct ExploreInput {
 
 struct ExploreCounters {
   int goals_issued = 0;
-  int goals_reached = 0;      // the robot arrived within the goal tolerance
-  int goals_seen = 0;         // its frontier was seen before the robot arrived
-  int goals_failed = 0;       // progress timeout
-  int goals_unreachable = 0;  // no plan
-  int goals_superseded = 0;   // a clearly better goal replaced it on the way
-  int goals_dropped = 0;      // the map put it inside the inflated band
-  int goals_retried = 0;      // lifted from the blacklist after a map change
+  int goals_reached = 0;       // the robot arrived within the goal tolerance
+  int goals_seen = 0;          // its frontier was seen before the robot arrived
+  int goals_failed = 0;        // progress timeout
+  int goals_unreachable = 0;   // no plan
+  int goals_superseded = 0;    // a clearly better goal replaced it on the way
+  int goals_dropped = 0;       // the map put it inside the inflated band
+  int goals_contradicted = 0;  // its path crossed what the latest scan sees
+  int goals_retried = 0;       // lifted from the blacklist after a map change
   int selections = 0;
   int escapes = 0;             // searches that started by leaving the band or a pocket
   int recoveries = 0;          // back-ups after the robot got stuck (closing its passage)
@@ -285,6 +295,9 @@ class GoalManager {
   // the first with a plan; candidates without one are blacklisted.
   Selection PlanFirst(const std::vector<GoalCandidate>& candidates, const ExploreInput& input,
                       const StartRegion& start);
+  // True when the part of 'path' the robot would drive (to its stand-off
+  // point) passes within scan_check_radius_m of a return of the latest scan.
+  bool ContradictedByScan(const PlannedPath& path, const ExploreInput& input) const;
   // Returns the best goal that is not blacklisted and has a plan.
   Selection SelectAndPlan(const ExploreInput& input);
   // Anchors the goal and hands its path to the follower. A re-plan to the

@@ -91,6 +91,70 @@ TEST(GoalManagerTest, SendsTheRobotToAStandOffInKnownFreeSpace) {
   EXPECT_LE((*d.goal - *d.target).norm(), 0.1 + 1e-9);  // at most the goal snap
 }
 
+TEST(GoalManagerTest, NoGoalWhosePathRunsIntoWhatTheLidarSees) {
+  // The map is open to the frontier, but the latest scan sees a wall right
+  // across the room 1.5 m ahead (a map fused from a misplaced submap).
+  Room room;
+  const Eigen::Vector2d robot = room.b.At(10, 20);
+  std::vector<Eigen::Vector2d> across, on_the_walls;
+  for (double dy = -2.0; dy <= 2.0; dy += 0.05) across.emplace_back(1.5, dy);
+  // The room's own walls as the lidar sees them (rows 0 and 39).
+  for (double dx = 0.0; dx <= 3.0; dx += 0.05) {
+    on_the_walls.emplace_back(dx, room.b.At(0, 0).y() - robot.y());
+    on_the_walls.emplace_back(dx, room.b.At(0, 39).y() - robot.y());
+  }
+  const auto first_update = [&](const std::vector<Eigen::Vector2d>& returns, GoalManager& gm) {
+    gm.Start();
+    ExploreInput in = room.Input(0, robot, true);
+    in.obstacles = &returns;
+    return gm.Update(in);
+  };
+  {
+    GoalManager gm = MakeManager();
+    const ExploreStatus s = first_update(across, gm);
+    EXPECT_NE(s.state, ExploreState::kDriving);
+    EXPECT_FALSE(s.goal.has_value());
+    EXPECT_GT(gm.counters().goals_contradicted, 0);
+    EXPECT_EQ(gm.counters().goals_issued, 0);
+  }
+  {
+    GoalManager gm = MakeManager();
+    const ExploreStatus s = first_update(on_the_walls, gm);
+    EXPECT_EQ(s.state, ExploreState::kDriving);
+    EXPECT_EQ(gm.counters().goals_contradicted, 0);
+  }
+  {
+    GoalManagerOptions off = NoStuckRecovery();
+    off.scan_check_radius_m = 0.0;
+    GoalManager gm = MakeManager(off);
+    EXPECT_EQ(first_update(across, gm).state, ExploreState::kDriving);
+  }
+}
+
+TEST(GoalManagerTest, AGoalWhoseWayTheLidarNowSeesBlockedIsGivenUp) {
+  // Driving to its goal, the robot sees a wall across the way the map still
+  // shows open: the re-plan after the next map change drops the goal.
+  Room room;
+  GoalManager gm = MakeManager();
+  gm.Start();
+  const Eigen::Vector2d robot = room.b.At(10, 20);
+  const ExploreStatus first = gm.Update(room.Input(0, robot, true));
+  ASSERT_EQ(first.state, ExploreState::kDriving);
+  std::vector<Eigen::Vector2d> across;
+  for (double dy = -2.0; dy <= 2.0; dy += 0.05) across.emplace_back(1.5, dy);
+  ExploreInput in = room.Input(2, robot, true);
+  in.obstacles = &across;
+  const ExploreStatus after = gm.Update(in);
+  EXPECT_NE(after.state, ExploreState::kDriving);
+  EXPECT_EQ(gm.counters().goals_contradicted, 1);
+  // Every other way to the frontier crosses that wall too.
+  in.time_s = 2.1;
+  in.map_changed = false;
+  EXPECT_NE(gm.Update(in).state, ExploreState::kDriving);
+  EXPECT_GT(gm.counters().goals_contradicted, 1);
+  EXPECT_EQ(gm.counters().goals_issued, 1);
+}
+
 TEST(GoalManagerTest, ProgressTimeoutMarksTheGoalFailedAndPicksAnother) {
   Room room;
   GoalManager gm = MakeManager();

@@ -75,6 +75,8 @@ void WritePlanPicture(const grid::OccupancyMap& map, const PlannedGoal& planned,
     const int n = std::max(1, static_cast<int>(std::ceil((b - a).norm() / step_m)));
     for (int k = 0; k <= n; ++k) mark(a + (b - a) * (static_cast<double>(k) / n), {0, 90, 255}, 0);
   }
+  // Returns beyond the path's box are left out rather than enlarging it.
+  for (const Eigen::Vector2d& p : planned.scan) mark(p, {220, 0, 220}, 0);
   mark(planned.robot, {0, 170, 0}, 2);
   mark(planned.target, {255, 150, 0}, 1);
   mark(planned.goal, {230, 0, 0}, 1);

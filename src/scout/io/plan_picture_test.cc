@@ -30,6 +30,7 @@ TEST(WritePlanPicture, DrawsTheMapAroundThePlanWithRobotGoalAndPath) {
   planned.goal = {4.05, 2.05};    // cell (40, 20)
   planned.target = {3.85, 2.05};  // cell (38, 20)
   planned.path = {planned.robot, {3.05, 3.05}, planned.target};
+  planned.scan = {{1.05, 4.05}, {50.05, 4.05}};  // cell (10, 40); the other far off
   const auto path = dir.path() / "plan.png";
   WritePlanPicture(map, planned, path);
   const grid::Image image = grid::ReadImage(path);
@@ -46,6 +47,7 @@ TEST(WritePlanPicture, DrawsTheMapAroundThePlanWithRobotGoalAndPath) {
   EXPECT_TRUE(is(cell(40, 20), 230, 0, 0));      // goal
   EXPECT_TRUE(is(cell(38, 20), 255, 150, 0));    // target
   EXPECT_TRUE(is(cell(25, 25), 0, 90, 255));     // on the path's first leg
+  EXPECT_TRUE(is(cell(10, 40), 220, 0, 220));    // a scan return
   EXPECT_TRUE(is(cell(10, 50), 255, 255, 255));  // free
   EXPECT_TRUE(is(cell(50, 50), 0, 0, 0));        // the wall
   EXPECT_TRUE(is(cell(70, 50), 200, 200, 200));  // unknown

@@ -1,0 +1,36 @@
+#include "scout/explore/scan_contradiction.h"
+
+#include <algorithm>
+
+namespace scout::explore {
+
+bool PathCrossesReturns(const std::vector<Eigen::Vector2d>& path,
+                        const std::vector<Eigen::Vector2d>& returns, double radius_m) {
+  if (path.empty() || returns.empty()) return false;
+  // The returns' box, grown by the radius, skips the segments far from all
+  // of them (a long path leaves the lidar's range after a few metres).
+  Eigen::Vector2d lo = returns.front(), hi = returns.front();
+  for (const Eigen::Vector2d& q : returns) lo = lo.cwiseMin(q), hi = hi.cwiseMax(q);
+  lo.array() -= radius_m;
+  hi.array() += radius_m;
+  const double r2 = radius_m * radius_m;
+  const auto near_segment = [&](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+    if ((a.cwiseMax(b).array() < lo.array()).any() || (a.cwiseMin(b).array() > hi.array()).any()) {
+      return false;
+    }
+    const Eigen::Vector2d ab = b - a;
+    const double length2 = ab.squaredNorm();
+    for (const Eigen::Vector2d& q : returns) {
+      const double t = length2 > 0.0 ? std::clamp((q - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
+      if ((a + t * ab - q).squaredNorm() <= r2) return true;
+    }
+    return false;
+  };
+  if (path.size() == 1) return near_segment(path[0], path[0]);
+  for (size_t i = 1; i < path.size(); ++i) {
+    if (near_segment(path[i - 1], path[i])) return true;
+  }
+  return false;
+}
+
+}  // namespace scout::explore
