@@ -137,17 +137,12 @@ EXPLORE_GUARD_COMMIT=216716d
 # 512946f (navigation points weigh information gain 1 instead of 3) changes the runs of the two
 # policies that rank by it, scout and meanshift-centres; nearest and explore-lite are as before.
 EXPLORE_POLICY_COMMIT=512946f
-# 45c033d (a path that passes within 0.15 m of a return of the latest scan is not driven) is in
-# the goal manager every policy shares, and an older run does not record whether it would have
-# triggered: every run older than it is stale.
-EXPLORE_SCAN_CHECK_COMMIT=45c033d
 stale_runs() {
   local name f
   for name in "$@"; do
     f=$OUT/$name/summary.json
     [[ -f $f ]] || continue
     if made_before "$EXPLORE_BEHAVIOUR_COMMIT" "$name" ||
-      made_before "$EXPLORE_SCAN_CHECK_COMMIT" "$name" ||
       { made_before "$EXPLORE_STUCK_COMMIT" "$name" && grep -Eq '"recoveries": *[1-9]' "$f"; } ||
       { made_before "$EXPLORE_RETRY_COMMIT" "$name" &&
         grep -Eq '"reachable_frontier_left": *[1-9]' "$f"; } ||
@@ -356,8 +351,7 @@ write_document() {
       echo "$EXPLORE_STUCK_COMMIT with a stuck recovery, or than $EXPLORE_RETRY_COMMIT with reachable frontier"
       echo "left at the end, or than $EXPLORE_GUARD_COMMIT with a guard stop or a stuck recovery, or than"
       echo "$EXPLORE_POLICY_COMMIT for the scout and meanshift-centres policies (information gain weighed"
-      echo "1 instead of 3; the runs those commits change), or than $EXPLORE_SCAN_CHECK_COMMIT (paths checked"
-      echo "against the latest scan), so not like-for-like with the other runs: $stale"
+      echo "1 instead of 3; the runs those commits change), so not like-for-like with the other runs: $stale"
       echo
     fi
     tables explore "${EXPLORE[@]}"

@@ -137,8 +137,13 @@ struct GoalManagerOptions {
   // from submaps a loop closure may have left misplaced, shows a way (see
   // PathCrossesReturns). Paths keep at least the narrow margin plus the
   // robot radius from mapped walls, so walls mapped within that minus this
-  // of where the lidar sees them pass. 0: off.
-  double scan_check_radius_m = 0.15;
+  // of where the lidar sees them pass. 0 (the default): off. At 0.15 it
+  // kept museum seed 1 from its goal in a lane through an exhibit block,
+  // but it also fires where local SLAM has the robot's pose 0.3 m off
+  // (office seed 2 at 1132 s: every path refused for a second), and the
+  // trajectories it changed ended with worse SLAM on office seeds 2 and 5
+  // (ATE 0.230 and 0.130 m, seed 2 at coverage 0.986; docs/EXPERIMENTS.md).
+  double scan_check_radius_m = 0.0;
   // Forward commands are checked against the latest scan (ExploreInput::
   // obstacles): see CollisionGuardOptions.
   CollisionGuardOptions guard;

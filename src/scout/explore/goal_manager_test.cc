@@ -103,6 +103,8 @@ TEST(GoalManagerTest, NoGoalWhosePathRunsIntoWhatTheLidarSees) {
     on_the_walls.emplace_back(dx, room.b.At(0, 0).y() - robot.y());
     on_the_walls.emplace_back(dx, room.b.At(0, 39).y() - robot.y());
   }
+  GoalManagerOptions on = NoStuckRecovery();
+  on.scan_check_radius_m = 0.15;
   const auto first_update = [&](const std::vector<Eigen::Vector2d>& returns, GoalManager& gm) {
     gm.Start();
     ExploreInput in = room.Input(0, robot, true);
@@ -110,7 +112,7 @@ TEST(GoalManagerTest, NoGoalWhosePathRunsIntoWhatTheLidarSees) {
     return gm.Update(in);
   };
   {
-    GoalManager gm = MakeManager();
+    GoalManager gm = MakeManager(on);
     const ExploreStatus s = first_update(across, gm);
     EXPECT_NE(s.state, ExploreState::kDriving);
     EXPECT_FALSE(s.goal.has_value());
@@ -118,7 +120,7 @@ TEST(GoalManagerTest, NoGoalWhosePathRunsIntoWhatTheLidarSees) {
     EXPECT_EQ(gm.counters().goals_issued, 0);
   }
   {
-    GoalManager gm = MakeManager();
+    GoalManager gm = MakeManager(on);
     const ExploreStatus s = first_update(on_the_walls, gm);
     EXPECT_EQ(s.state, ExploreState::kDriving);
     EXPECT_EQ(gm.counters().goals_contradicted, 0);
@@ -135,7 +137,9 @@ TEST(GoalManagerTest, AGoalWhoseWayTheLidarNowSeesBlockedIsGivenUp) {
   // Driving to its goal, the robot sees a wall across the way the map still
   // shows open: the re-plan after the next map change drops the goal.
   Room room;
-  GoalManager gm = MakeManager();
+  GoalManagerOptions on = NoStuckRecovery();
+  on.scan_check_radius_m = 0.15;
+  GoalManager gm = MakeManager(on);
   gm.Start();
   const Eigen::Vector2d robot = room.b.At(10, 20);
   const ExploreStatus first = gm.Update(room.Input(0, robot, true));
