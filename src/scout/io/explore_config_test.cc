@@ -78,7 +78,8 @@ TEST_F(ExploreConfigTest, DefaultFileMatchesTheBuiltInDefaults) {
 TEST_F(ExploreConfigTest, ValuesAreReadWithTheirUnits) {
   const ScoutConfig c = Load(
       "explore:\n  max_sim_time_s: 120\n  initial_turn_deg: 90\n  goals:\n    return_to_start: "
-      "true\n    scan_check_radius_m: 0.15\n    guard:\n      predict_motion: true\n      stop_turn_radps: 0\n  follower:\n    "
+      "true\n    scan_check_radius_m: 0.15\n    guard:\n      predict_motion: true\n      "
+      "stop_turn_radps: 0\n  follower:\n    "
       "rotate_in_place_heading_deg: "
       "30\nrobot:\n  start_heading_deg: -90\n  lidar:\n    beams: 361\n");
   EXPECT_DOUBLE_EQ(c.explore.max_sim_time_s, 120.0);
