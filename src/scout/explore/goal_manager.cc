@@ -220,9 +220,11 @@ GoalManager::Ranking GoalManager::ReachAndRank(const ExploreInput& in,
 }
 
 GoalManager::Selection GoalManager::PlanFirst(const std::vector<GoalCandidate>& candidates,
-                                              const ExploreInput& in, const StartRegion& start) {
+                                              const ExploreInput& in, const StartRegion& start,
+                                              bool fall_back) {
   Selection sel;
   sel.none_left = candidates.empty();
+  Selection contradicted;
   int attempts = 0;
   for (const GoalCandidate& c : candidates) {
     if (attempts++ >= options_.max_plan_attempts) break;
@@ -236,18 +238,25 @@ GoalManager::Selection GoalManager::PlanFirst(const std::vector<GoalCandidate>& 
     }
     if (ContradictedByScan(*path, in)) {
       ++counters_.goals_contradicted;
-      failed_.RecordFailure(c.position, in.submaps, *map_);
+      if (!contradicted.goal) contradicted.goal = c.position, contradicted.path = std::move(path);
       continue;
     }
     sel.goal = c.position;
     sel.path = std::move(path);
-    break;
+    return sel;
+  }
+  if (fall_back && contradicted.goal) {
+    sel.goal = contradicted.goal;
+    sel.path = std::move(contradicted.path);
   }
   return sel;
 }
 
 bool GoalManager::ContradictedByScan(const PlannedPath& path, const ExploreInput& in) const {
-  if (options_.scan_check_radius_m <= 0.0 || in.obstacles == nullptr) return false;
+  if (options_.scan_check_radius_m <= 0.0 || in.obstacles == nullptr ||
+      !policy_->checks_paths_against_scan()) {
+    return false;
+  }
   const std::vector<Eigen::Vector2d> driven = CutAtStandOff(
       *map_, path.points, options_.max_stand_off_m, follower_.options().goal_tolerance_m);
   std::vector<Eigen::Vector2d> returns;
@@ -260,7 +269,7 @@ GoalManager::Selection GoalManager::SelectAndPlan(const ExploreInput& in) {
   ++counters_.selections;
   const std::vector<Eigen::Vector2d> frontier = FrontierInBoundary(*in.frontier);
   const Ranking ranking = ReachAndRank(in, frontier);
-  return PlanFirst(ranking.candidates, in, *ranking.reach.start);
+  return PlanFirst(ranking.candidates, in, *ranking.reach.start, /*fall_back=*/true);
 }
 
 void GoalManager::BeginDriving(const Eigen::Vector2d& goal, const PlannedPath& path,
@@ -400,7 +409,8 @@ void GoalManager::Replan(const ExploreInput& in) {
       }
     }
     if (!better.empty()) {
-      Selection sel = PlanFirst(better, in, *ranking.reach.start);
+      // Only for a way the scan does not contradict.
+      Selection sel = PlanFirst(better, in, *ranking.reach.start, /*fall_back=*/false);
       if (sel.goal) {
         ++counters_.goals_superseded;
         return BeginDriving(*sel.goal, *sel.path, in, ExploreState::kDriving, /*new_goal=*/true);
@@ -409,13 +419,7 @@ void GoalManager::Replan(const ExploreInput& in) {
   }
   // Keep the goal; only its path changes with the map.
   if (std::optional<PlannedPath> path = planner_.Plan(*map_, *ranking.reach.start, current)) {
-    if (!ContradictedByScan(*path, in)) {
-      return BeginDriving(current, *path, in, ExploreState::kDriving, /*new_goal=*/false);
-    }
-    // The way there runs into what the lidar sees now.
-    ++counters_.goals_contradicted;
-    failed_.RecordFailure(current, in.submaps, *map_);
-    return EndGoal(ExploreState::kPlanning);
+    return BeginDriving(current, *path, in, ExploreState::kDriving, /*new_goal=*/false);
   }
   if (map_->NearestTraversable(current, map_->options().goal_snap_radius_m)) {
     // The map now blocks every way there.

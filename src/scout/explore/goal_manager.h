@@ -130,20 +130,21 @@ struct GoalManagerOptions {
   // leaves no room at a stop that keeps only the narrow margin (see
   // CutAtStandOff). 0 drives to the goal itself.
   double max_stand_off_m = 0.5;
-  // A plan whose path (to the stand-off point) passes within this distance
-  // (metres) of a return of the latest scan (ExploreInput::obstacles) is
-  // not driven: the goal counts as without a plan (blacklisted until the
-  // map around it changes). The lidar sees a wall where the map, fused
-  // from submaps a loop closure may have left misplaced, shows a way (see
-  // PathCrossesReturns). Paths keep at least the narrow margin plus the
-  // robot radius from mapped walls, so walls mapped within that minus this
-  // of where the lidar sees them pass. 0 (the default): off. At 0.15 it
-  // kept museum seed 1 from its goal in a lane through an exhibit block,
-  // but it also fires where local SLAM has the robot's pose 0.3 m off
-  // (office seed 2 at 1132 s: every path refused for a second), and the
-  // trajectories it changed ended with worse SLAM on office seeds 2 and 5
-  // (ATE 0.230 and 0.130 m, seed 2 at coverage 0.986; docs/EXPERIMENTS.md).
-  double scan_check_radius_m = 0.0;
+  // For policies that ask for it (scout): a candidate whose path (to its
+  // stand-off point) passes within this distance (metres) of a return of
+  // the latest scan (ExploreInput::obstacles) is passed over for the next
+  // one whose path does not, among the max_plan_attempts planned; when
+  // every one of those is contradicted, the first is taken as before. The
+  // lidar sees a wall where the map, fused from submaps a loop closure may
+  // have left misplaced, shows a way (see PathCrossesReturns; museum seed
+  // 1 at 1812 s). It only reorders: where local SLAM holds the robot's
+  // pose off, the scan contradicts every way out (office seed 2 at 1132 s,
+  // returns 0.5 m ahead 0.3 m from the mapped wall), and refusing them all
+  // stranded the robot and cost that run its map (docs/EXPERIMENTS.md).
+  // Paths keep at least the narrow margin plus the robot radius from
+  // mapped walls, so walls mapped within that minus this of where the
+  // lidar sees them pass. 0: off.
+  double scan_check_radius_m = 0.15;
   // Forward commands are checked against the latest scan (ExploreInput::
   // obstacles): see CollisionGuardOptions.
   CollisionGuardOptions guard;
@@ -204,7 +205,7 @@ struct ExploreCounters {
   int goals_unreachable = 0;   // no plan
   int goals_superseded = 0;    // a clearly better goal replaced it on the way
   int goals_dropped = 0;       // the map put it inside the inflated band
-  int goals_contradicted = 0;  // its path crossed what the latest scan sees
+  int goals_contradicted = 0;  // passed over: its path crossed what the latest scan sees
   int goals_retried = 0;       // lifted from the blacklist after a map change
   int selections = 0;
   int escapes = 0;             // searches that started by leaving the band or a pocket
@@ -297,11 +298,14 @@ class GoalManager {
   };
   Ranking ReachAndRank(const ExploreInput& input, const std::vector<Eigen::Vector2d>& frontier);
   // Plans to the candidates in order (at most max_plan_attempts) and returns
-  // the first with a plan; candidates without one are blacklisted.
+  // the first with a plan that the latest scan does not contradict (scan
+  // check), or else, with 'fall_back', the first with a plan; candidates
+  // without one are blacklisted.
   Selection PlanFirst(const std::vector<GoalCandidate>& candidates, const ExploreInput& input,
-                      const StartRegion& start);
-  // True when the part of 'path' the robot would drive (to its stand-off
-  // point) passes within scan_check_radius_m of a return of the latest scan.
+                      const StartRegion& start, bool fall_back);
+  // True when the scan check is on for the policy and the part of 'path' the
+  // robot would drive (to its stand-off point) passes within
+  // scan_check_radius_m of a return of the latest scan.
   bool ContradictedByScan(const PlannedPath& path, const ExploreInput& input) const;
   // Returns the best goal that is not blacklisted and has a plan.
   Selection SelectAndPlan(const ExploreInput& input);

@@ -68,6 +68,10 @@ class GoalPolicy {
   virtual ~GoalPolicy() = default;
   virtual std::string_view name() const = 0;
   virtual bool needs_path_distances() const { return false; }
+  // True when the goal manager should pass over candidates whose path the
+  // latest scan contradicts (GoalManagerOptions::scan_check_radius_m): part
+  // of Scout's own goal choice; the baselines keep their published one.
+  virtual bool checks_paths_against_scan() const { return false; }
   // The work of Rank that needs no path distances (input.distances unset),
   // which the goal manager runs while it computes them; Rank reads the result
   // from input.prepared and does the work itself without it. Must not
