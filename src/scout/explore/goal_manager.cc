@@ -225,6 +225,7 @@ GoalManager::Selection GoalManager::PlanFirst(const std::vector<GoalCandidate>& 
   Selection sel;
   sel.none_left = candidates.empty();
   Selection contradicted;
+  const std::vector<Eigen::Vector2d> returns = CheckedReturns(in);
   int attempts = 0;
   for (const GoalCandidate& c : candidates) {
     if (attempts++ >= options_.max_plan_attempts) break;
@@ -236,9 +237,12 @@ GoalManager::Selection GoalManager::PlanFirst(const std::vector<GoalCandidate>& 
       failed_.RecordFailure(c.position, in.submaps, *map_);
       continue;
     }
-    if (ContradictedByScan(*path, in)) {
+    if (ContradictedByScan(*path, returns)) {
       ++counters_.goals_contradicted;
-      if (!contradicted.goal) contradicted.goal = c.position, contradicted.path = std::move(path);
+      if (!contradicted.goal) {
+        contradicted.goal = c.position;
+        contradicted.path = std::move(path);
+      }
       continue;
     }
     sel.goal = c.position;
@@ -252,16 +256,22 @@ GoalManager::Selection GoalManager::PlanFirst(const std::vector<GoalCandidate>& 
   return sel;
 }
 
-bool GoalManager::ContradictedByScan(const PlannedPath& path, const ExploreInput& in) const {
+std::vector<Eigen::Vector2d> GoalManager::CheckedReturns(const ExploreInput& in) const {
+  std::vector<Eigen::Vector2d> returns;
   if (options_.scan_check_radius_m <= 0.0 || in.obstacles == nullptr ||
       !policy_->checks_paths_against_scan()) {
-    return false;
+    return returns;
   }
-  const std::vector<Eigen::Vector2d> driven = CutAtStandOff(
-      *map_, path.points, options_.max_stand_off_m, follower_.options().goal_tolerance_m);
-  std::vector<Eigen::Vector2d> returns;
   returns.reserve(in.obstacles->size());
   for (const Eigen::Vector2d& q : *in.obstacles) returns.push_back(in.robot_pose * q);
+  return returns;
+}
+
+bool GoalManager::ContradictedByScan(const PlannedPath& path,
+                                     const std::vector<Eigen::Vector2d>& returns) const {
+  if (returns.empty()) return false;
+  const std::vector<Eigen::Vector2d> driven = CutAtStandOff(
+      *map_, path.points, options_.max_stand_off_m, follower_.options().goal_tolerance_m);
   return PathCrossesReturns(driven, returns, options_.scan_check_radius_m);
 }
 

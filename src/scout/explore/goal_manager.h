@@ -303,10 +303,13 @@ class GoalManager {
   // without one are blacklisted.
   Selection PlanFirst(const std::vector<GoalCandidate>& candidates, const ExploreInput& input,
                       const StartRegion& start, bool fall_back);
-  // True when the scan check is on for the policy and the part of 'path' the
-  // robot would drive (to its stand-off point) passes within
-  // scan_check_radius_m of a return of the latest scan.
-  bool ContradictedByScan(const PlannedPath& path, const ExploreInput& input) const;
+  // The latest scan's returns in the global frame when the scan check is on
+  // for the policy (scan_check_radius_m > 0 and a scan given); else none.
+  std::vector<Eigen::Vector2d> CheckedReturns(const ExploreInput& input) const;
+  // True when the part of 'path' the robot would drive (to its stand-off
+  // point) passes within scan_check_radius_m of one of 'returns' (global).
+  bool ContradictedByScan(const PlannedPath& path,
+                          const std::vector<Eigen::Vector2d>& returns) const;
   // Returns the best goal that is not blacklisted and has a plan.
   Selection SelectAndPlan(const ExploreInput& input);
   // Anchors the goal and hands its path to the follower. A re-plan to the
