@@ -11,6 +11,7 @@
 #include "scout/explore/option_check.h"
 #include "scout/explore/scan_contradiction.h"
 #include "scout/explore/stand_off.h"
+#include "scout/geometry/segment.h"
 
 namespace scout::explore {
 
@@ -489,18 +490,6 @@ bool GoalManager::GuardRear(const ExploreInput& in, VelocityCommand* command) co
   return g.stopped;
 }
 
-namespace {
-
-double DistanceToSegment(const Eigen::Vector2d& p, const Eigen::Vector2d& a,
-                         const Eigen::Vector2d& b) {
-  const Eigen::Vector2d ab = b - a;
-  const double length_sq = ab.squaredNorm();
-  const double t = length_sq > 0.0 ? std::clamp((p - a).dot(ab) / length_sq, 0.0, 1.0) : 0.0;
-  return (a + t * ab - p).norm();
-}
-
-}  // namespace
-
 bool GoalManager::OffTrail(const geometry::Rigid2d& pose) const {
   const double look_m = options_.back_up_look_behind_m;
   const std::deque<Eigen::Vector2d>& trail = trail_.points();
@@ -512,7 +501,7 @@ bool GoalManager::OffTrail(const geometry::Rigid2d& pose) const {
     const Eigen::Vector2d c = pose.translation() + (look_m * k / steps) * back;
     double nearest_m = (c - trail.front()).norm();
     for (size_t i = 1; i < trail.size(); ++i) {
-      nearest_m = std::min(nearest_m, DistanceToSegment(c, trail[i - 1], trail[i]));
+      nearest_m = std::min(nearest_m, geometry::DistanceToSegment(c, trail[i - 1], trail[i]));
     }
     if (nearest_m > options_.back_up_trail_tolerance_m) return true;
   }

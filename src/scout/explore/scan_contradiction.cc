@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "scout/geometry/segment.h"
+
 namespace scout::explore {
 
 bool PathCrossesReturns(const std::vector<Eigen::Vector2d>& path,
@@ -18,13 +20,9 @@ bool PathCrossesReturns(const std::vector<Eigen::Vector2d>& path,
     if ((a.cwiseMax(b).array() < lo.array()).any() || (a.cwiseMin(b).array() > hi.array()).any()) {
       return false;
     }
-    const Eigen::Vector2d ab = b - a;
-    const double length2 = ab.squaredNorm();
-    for (const Eigen::Vector2d& q : returns) {
-      const double t = length2 > 0.0 ? std::clamp((q - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
-      if ((a + t * ab - q).squaredNorm() <= r2) return true;
-    }
-    return false;
+    return std::any_of(returns.begin(), returns.end(), [&](const Eigen::Vector2d& q) {
+      return geometry::SquaredDistanceToSegment(q, a, b) <= r2;
+    });
   };
   if (path.size() == 1) return near_segment(path[0], path[0]);
   for (size_t i = 1; i < path.size(); ++i) {

@@ -7,11 +7,21 @@
 
 #include "scout/geometry/box.h"
 #include "scout/geometry/rigid_transform.h"
+#include "scout/geometry/segment.h"
 
 namespace scout::geometry {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
+
+TEST(DistanceToSegment, ProjectsOntoTheSegmentOrItsNearerEnd) {
+  const Eigen::Vector2d a(0, 0), b(4, 0);
+  EXPECT_DOUBLE_EQ(DistanceToSegment({2, 3}, a, b), 3.0);    // beside it
+  EXPECT_DOUBLE_EQ(DistanceToSegment({7, 4}, a, b), 5.0);    // beyond b
+  EXPECT_DOUBLE_EQ(DistanceToSegment({-3, -4}, a, b), 5.0);  // before a
+  EXPECT_DOUBLE_EQ(DistanceToSegment({3, 4}, a, a), 5.0);    // a point
+  EXPECT_DOUBLE_EQ(SquaredDistanceToSegment({2, 3}, a, b), 9.0);
+}
 
 TEST(NormalizeAngle, WrapsIntoHalfOpenRange) {
   EXPECT_NEAR(NormalizeAngle(3 * kPi / 2), -kPi / 2, 1e-12);
