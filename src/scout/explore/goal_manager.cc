@@ -39,6 +39,7 @@ void Validate(const GoalManagerOptions& o) {
   CheckAtLeast(g, "goal_match_radius_m", o.goal_match_radius_m, 0.0);
   CheckAtLeast(g, "max_stand_off_m", o.max_stand_off_m, 0.0);
   CheckAtLeast(g, "scan_check_radius_m", o.scan_check_radius_m, 0.0);
+  CheckAtLeast(g, "stand_off_unknown_margin_m", o.stand_off_unknown_margin_m, 0.0);
   Validate(o.guard);
   if (!o.boundary.empty() && o.boundary.size() < 3) {
     RejectOption(g, "boundary", "no vertices or at least 3 vertices",
@@ -257,6 +258,10 @@ GoalManager::Selection GoalManager::PlanFirst(const std::vector<GoalCandidate>& 
   return sel;
 }
 
+double GoalManager::StandOffUnknownMarginM() const {
+  return policy_->keeps_stand_off_from_unknown() ? options_.stand_off_unknown_margin_m : 0.0;
+}
+
 std::vector<Eigen::Vector2d> GoalManager::CheckedReturns(const ExploreInput& in) const {
   std::vector<Eigen::Vector2d> returns;
   if (options_.scan_check_radius_m <= 0.0 || in.obstacles == nullptr ||
@@ -271,8 +276,9 @@ std::vector<Eigen::Vector2d> GoalManager::CheckedReturns(const ExploreInput& in)
 bool GoalManager::ContradictedByScan(const PlannedPath& path,
                                      const std::vector<Eigen::Vector2d>& returns) const {
   if (returns.empty()) return false;
-  const std::vector<Eigen::Vector2d> driven = CutAtStandOff(
-      *map_, path.points, options_.max_stand_off_m, follower_.options().goal_tolerance_m);
+  const std::vector<Eigen::Vector2d> driven =
+      CutAtStandOff(*map_, path.points, options_.max_stand_off_m,
+                    follower_.options().goal_tolerance_m, StandOffUnknownMarginM());
   return PathCrossesReturns(driven, returns, options_.scan_check_radius_m);
 }
 
@@ -288,9 +294,10 @@ void GoalManager::BeginDriving(const Eigen::Vector2d& goal, const PlannedPath& p
   goal_ = Anchor(goal, in.submaps);
   // Home is where the robot stood: no stand-off needed.
   std::vector<Eigen::Vector2d> points =
-      state == ExploreState::kDriving ? CutAtStandOff(*map_, path.points, options_.max_stand_off_m,
-                                                      follower_.options().goal_tolerance_m)
-                                      : path.points;
+      state == ExploreState::kDriving
+          ? CutAtStandOff(*map_, path.points, options_.max_stand_off_m,
+                          follower_.options().goal_tolerance_m, StandOffUnknownMarginM())
+          : path.points;
   const double length_m = PolylineLength(points);
   follower_.SetPath(std::move(points));
   if (new_goal || length_m < best_remaining_m_) best_remaining_m_ = length_m;

@@ -130,6 +130,11 @@ struct GoalManagerOptions {
   // leaves no room at a stop that keeps only the narrow margin (see
   // CutAtStandOff). 0 drives to the goal itself.
   double max_stand_off_m = 0.5;
+  // For policies that ask for it (scout): that stop should also keep this
+  // much (metres) from unknown space beyond the robot's disc, where a point
+  // within max_stand_off_m does (see CutAtStandOff; museum seed 3 at
+  // 3559 s). 0: off.
+  double stand_off_unknown_margin_m = 0.1;
   // For policies that ask for it (scout): a candidate whose path (to its
   // stand-off point) passes within this distance (metres) of a return of
   // the latest scan (ExploreInput::obstacles) is passed over for the next
@@ -303,6 +308,8 @@ class GoalManager {
   // without one are blacklisted.
   Selection PlanFirst(const std::vector<GoalCandidate>& candidates, const ExploreInput& input,
                       const StartRegion& start, bool fall_back);
+  // stand_off_unknown_margin_m for a policy that keeps it, else 0.
+  double StandOffUnknownMarginM() const;
   // The latest scan's returns in the global frame when the scan check is on
   // for the policy (scan_check_radius_m > 0 and a scan given); else none.
   std::vector<Eigen::Vector2d> CheckedReturns(const ExploreInput& input) const;

@@ -92,6 +92,33 @@ TEST(GoalManagerTest, SendsTheRobotToAStandOffInKnownFreeSpace) {
   EXPECT_LE((*d.goal - *d.target).norm(), 0.1 + 1e-9);  // at most the goal snap
 }
 
+TEST(GoalManagerTest, ScoutsStandOffKeepsAMarginFromUnknownSpace) {
+  // Unknown starts at x = 4.1 m. Without the margin the stop is the last
+  // path point whose 0.2 m disc is known free (x in (3.85, 3.9]); Scout's
+  // policy stops 0.1 m farther back, the baselines where they did.
+  Room room;
+  const auto target_x = [&room](const GoalManagerOptions& o, std::string_view policy) {
+    GoalManager gm = MakeManager(o, policy);
+    gm.Start();
+    const ExploreStatus s = gm.Update(room.Input(0, room.b.At(10, 20), true));
+    EXPECT_EQ(s.state, ExploreState::kDriving) << policy;
+    return s.target ? s.target->x() : std::nan("");
+  };
+  GoalManagerOptions o = NoStuckRecovery();
+  o.stand_off_unknown_margin_m = 0.1;
+  const double scout_x = target_x(o, "scout");
+  EXPECT_LE(scout_x + 0.3, 4.1 + 1e-9);
+  EXPECT_GT(scout_x + 0.3, 4.1 - 0.05 - 1e-9);
+  const double nearest_x = target_x(o, "nearest");
+  EXPECT_LE(nearest_x + 0.2, 4.1 + 1e-9);
+  EXPECT_GT(nearest_x + 0.2, 4.1 - 0.05 - 1e-9);
+  o.stand_off_unknown_margin_m = 0.0;
+  EXPECT_NEAR(target_x(o, "scout"), nearest_x, 1e-9);
+  // A margin no point within the back-off keeps: the stop as without it.
+  o.stand_off_unknown_margin_m = 0.5;
+  EXPECT_NEAR(target_x(o, "scout"), nearest_x, 1e-9);
+}
+
 TEST(GoalManagerTest, PassesOverGoalsWhosePathRunsIntoWhatTheLidarSees) {
   // A corridor known free from x = 10 to 40 (cells), unknown at both ends:
   // the nearer frontier (right) is the better goal. The latest scan sees a

@@ -37,6 +37,7 @@ class ScoutPolicy : public GoalPolicy {
   explicit ScoutPolicy(const NavigationPointOptions& o) : options_(o) {}
   std::string_view name() const override { return "scout"; }
   bool checks_paths_against_scan() const override { return true; }
+  bool keeps_stand_off_from_unknown() const override { return true; }
   bool needs_path_distances() const override { return true; }
   std::any Prepare(const PolicyInput& in) const override {
     return PartitionFrontier(*in.map, Avoiding(in), options_);

@@ -72,6 +72,10 @@ class GoalPolicy {
   // latest scan contradicts (GoalManagerOptions::scan_check_radius_m): part
   // of Scout's own goal choice; the baselines keep their published one.
   virtual bool checks_paths_against_scan() const { return false; }
+  // True when the goal manager should stop where the robot keeps a margin
+  // from unknown space (GoalManagerOptions::stand_off_unknown_margin_m):
+  // likewise Scout's own.
+  virtual bool keeps_stand_off_from_unknown() const { return false; }
   // The work of Rank that needs no path distances (input.distances unset),
   // which the goal manager runs while it computes them; Rank reads the result
   // from input.prepared and does the work itself without it. Must not

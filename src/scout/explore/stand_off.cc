@@ -8,8 +8,12 @@
 namespace scout::explore {
 
 bool DiscInKnownFree(const PlanningMap& map, const Eigen::Vector2d& p) {
+  return DiscInKnownFree(map, p, map.options().robot_radius_m);
+}
+
+bool DiscInKnownFree(const PlanningMap& map, const Eigen::Vector2d& p, double radius_m) {
   const grid::MapLimits& limits = map.limits();
-  const double r = map.options().robot_radius_m;
+  const double r = radius_m;
   const double half = 0.5 * limits.resolution();
   const grid::CellIndex lo = limits.CellContaining(p - Eigen::Vector2d(r, r));
   const grid::CellIndex hi = limits.CellContaining(p + Eigen::Vector2d(r, r));
@@ -67,8 +71,17 @@ bool KeepsFullMargin(const PlanningMap& map, const Eigen::Vector2d& p) {
 
 std::vector<Eigen::Vector2d> CutAtStandOff(const PlanningMap& map,
                                            const std::vector<Eigen::Vector2d>& path,
-                                           double max_back_off_m, double min_length_m) {
+                                           double max_back_off_m, double min_length_m,
+                                           double unknown_margin_m) {
   if (path.size() < 2 || max_back_off_m <= 0.0) return path;
+  if (unknown_margin_m > 0.0) {
+    const double radius_m = map.options().robot_radius_m + unknown_margin_m;
+    const auto clear = [&map, radius_m](const Eigen::Vector2d& p) {
+      return KeepsFullMargin(map, p) && DiscInKnownFree(map, p, radius_m);
+    };
+    if (clear(path.back())) return path;
+    if (auto cut = CutAtLast(map, path, max_back_off_m, min_length_m, clear)) return *cut;
+  }
   const auto full = [&map](const Eigen::Vector2d& p) {
     return KeepsFullMargin(map, p) && DiscInKnownFree(map, p);
   };

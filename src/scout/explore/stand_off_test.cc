@@ -36,6 +36,27 @@ TEST(StandOffTest, StopsWhereTheDiscCoversOnlyKnownFreeCells) {
   EXPECT_LE((goal - cut.back()).norm(), 0.5);
 }
 
+TEST(StandOffTest, KeepsTheMarginFromUnknownSpaceWhereAPointWithinTheBackOffDoes) {
+  const MapBuilder b = RoomWithUnknownEnd();
+  const PlanningMap map(b.map(), testing::SmallRobot());
+  const Eigen::Vector2d goal = b.At(29, 10);  // x = 2.95 m; unknown from 3.0 m
+  const std::vector<Eigen::Vector2d> path = {b.At(5, 10), goal};
+  // A 0.1 m disc plus 0.1 m of margin: the stop keeps 0.2 m from x = 3.0 m.
+  const std::vector<Eigen::Vector2d> cut = CutAtStandOff(map, path, 0.5, 0.25, 0.1);
+  ASSERT_EQ(cut.size(), 2u);
+  EXPECT_TRUE(DiscInKnownFree(map, cut.back(), 0.2));
+  EXPECT_NEAR(cut.back().y(), goal.y(), 1e-9);
+  EXPECT_LE(cut.back().x(), 3.0 - 0.2 + 1e-9);
+  EXPECT_GT(cut.back().x(), 3.0 - 0.2 - 0.051);
+  // Beyond the back-off (0.15 m of path needed, 0.12 allowed): the stop
+  // without the margin.
+  EXPECT_EQ(CutAtStandOff(map, path, 0.12, 0.25, 0.1), CutAtStandOff(map, path, 0.12, 0.25));
+  EXPECT_NEAR(CutAtStandOff(map, path, 0.12, 0.25, 0.1).back().x(), 2.9, 0.051);
+  // A goal that keeps the margin already is driven to.
+  const std::vector<Eigen::Vector2d> inside = {b.At(5, 10), b.At(20, 10)};
+  EXPECT_EQ(CutAtStandOff(map, inside, 0.5, 0.25, 0.1), inside);
+}
+
 TEST(StandOffTest, KeepsPathsThatEndInKnownFreeSpaceOrCannotBackOff) {
   const MapBuilder b = RoomWithUnknownEnd();
   const PlanningMap map(b.map(), testing::SmallRobot());
