@@ -140,8 +140,6 @@ EXPLORE_POLICY_COMMIT=512946f
 # d13fac7 (Scout's policy passes over candidates whose path the latest scan contradicts) changes
 # the scout policy's runs only; an older one does not record whether the check would have fired.
 EXPLORE_SCAN_CHECK_COMMIT=d13fac7
-# ecfbaa7 (Scout's policy stops where its disc keeps 0.1 m from unknown space) likewise.
-EXPLORE_STAND_OFF_COMMIT=ecfbaa7
 stale_runs() {
   local name f
   for name in "$@"; do
@@ -156,8 +154,6 @@ stale_runs() {
       { made_before "$EXPLORE_POLICY_COMMIT" "$name" &&
         grep -Eq '"goals_policy": *"(scout|meanshift-centres)"' "$f"; } ||
       { made_before "$EXPLORE_SCAN_CHECK_COMMIT" "$name" &&
-        grep -Eq '"goals_policy": *"scout"' "$f"; } ||
-      { made_before "$EXPLORE_STAND_OFF_COMMIT" "$name" &&
         grep -Eq '"goals_policy": *"scout"' "$f"; }; then
       printf '`%s` ' "$name"
     fi
