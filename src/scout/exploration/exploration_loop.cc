@@ -6,6 +6,7 @@
 #include <optional>
 #include <utility>
 
+#include "scout/explore/scan_contradiction.h"
 #include "scout/frontier/stopwatch.h"
 
 namespace scout::exploration {
@@ -47,6 +48,9 @@ explore::GoalManagerOptions GoalOptionsInMapFrame(const ExplorationOptions& opti
 // clearance and a spare (0.48 m by default: 0.15 m/s for 1 s, 0.2 + 0.03 m,
 // 0.1 m), so a faster back-up speed widens it.
 constexpr double kMinRecentReturnsRadiusM = 1.0;
+// The scan check's remembered returns are thinned to one per cell of this
+// side, well below the check radius (0.15 m), so a wall keeps its returns.
+constexpr double kScanCheckThinningM = 0.02;
 constexpr double kRecentReturnsSpareM = 0.1;
 double RecentReturnsRadiusM(const ExplorationOptions& o) {
   const explore::GoalManagerOptions& g = o.explore.goals;
@@ -87,6 +91,8 @@ ExplorationLoop::ExplorationLoop(const sim::World& world, const ExplorationOptio
              explore::MakeGoalPolicy(options_.explore.goal_policy, options_.explore.policy)),
       world_from_map_(robot_.true_pose()),
       recent_returns_(options_.explore.goals.guard.memory_s, RecentReturnsRadiusM(options_)),
+      scan_check_returns_(options_.explore.goals.scan_check_memory_s,
+                          options_.robot.lidar.range_max_m),
       fusion_(options_.slam.local.submaps.resolution_m),
       map_progress_(options_.explore.min_map_gain_m2) {
   // Local SLAM's frame starts at the first scan's pose, which is the start.
@@ -133,6 +139,7 @@ void ExplorationLoop::FeedSensorsUntimed() {
   }
   latest_scan_local_pose_ = LocalPose();
   recent_returns_.Add(scan->time_s, latest_scan_local_pose_, latest_returns_);
+  scan_check_returns_.Add(scan->time_s, latest_scan_local_pose_, latest_returns_);
   if (inserted || slam_changed_) {
     // The newest node ties the local frame to the global one; optimisations
     // move it, so it is re-read after every insertion or event (alone: a
@@ -438,6 +445,11 @@ ExplorationResult ExplorationLoop::Run(const ProgressCallback& progress, double 
                                       base.options().max_angular_accel_radps2, e.dt_s};
       }
       in.recent_returns = [this] { return recent_returns_.Around(LocalPose()); };
+      if (scan_check_returns_.num_scans() > 0) {
+        in.scan_check_returns = [this] {
+          return explore::ThinToCells(scan_check_returns_.Around(LocalPose()), kScanCheckThinningM);
+        };
+      }
       in.driven = &driven_;
       const frontier::Stopwatch watch;
       status = goals_.Update(in);

@@ -268,6 +268,9 @@ class ExplorationLoop {
   std::vector<Eigen::Vector2d> guard_returns_;
   // The recent scans' returns near the robot (local SLAM frame), for backing up.
   explore::ScanMemory recent_returns_;
+  // The recent scans' returns within the lidar's range, for the scan check
+  // (GoalManagerOptions::scan_check_memory_s).
+  explore::ScanMemory scan_check_returns_;
   // SLAM's node positions (global), refreshed with the fused map.
   std::vector<Eigen::Vector2d> driven_;
 

@@ -39,6 +39,7 @@ void Validate(const GoalManagerOptions& o) {
   CheckAtLeast(g, "goal_match_radius_m", o.goal_match_radius_m, 0.0);
   CheckAtLeast(g, "max_stand_off_m", o.max_stand_off_m, 0.0);
   CheckAtLeast(g, "scan_check_radius_m", o.scan_check_radius_m, 0.0);
+  CheckAtLeast(g, "scan_check_memory_s", o.scan_check_memory_s, 0.0);
   CheckAtLeast(g, "stand_off_unknown_margin_m", o.stand_off_unknown_margin_m, 0.0);
   Validate(o.guard);
   if (!o.boundary.empty() && o.boundary.size() < 3) {
@@ -270,6 +271,9 @@ std::vector<Eigen::Vector2d> GoalManager::CheckedReturns(const ExploreInput& in)
   }
   returns.reserve(in.obstacles->size());
   for (const Eigen::Vector2d& q : *in.obstacles) returns.push_back(in.robot_pose * q);
+  if (options_.scan_check_memory_s > 0.0 && in.scan_check_returns) {
+    for (const Eigen::Vector2d& q : in.scan_check_returns()) returns.push_back(in.robot_pose * q);
+  }
   return returns;
 }
 

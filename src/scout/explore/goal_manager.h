@@ -152,6 +152,13 @@ struct GoalManagerOptions {
   // mapped walls, so walls mapped within that minus this of where the
   // lidar sees them pass. 0: off.
   double scan_check_radius_m = 0.15;
+  // The scan check also uses the returns of the scans of the last this many
+  // seconds of moving time (ExploreInput::scan_check_returns): a 180 degree
+  // lidar does not see the face of a block beside or behind the robot that
+  // it saw a few seconds before, and a path round the end of the edge the
+  // latest scan saw can run into it (museum seed 1 at 2898 s). 0: the
+  // latest scan only.
+  double scan_check_memory_s = 0.0;
   // Forward commands are checked against the latest scan (ExploreInput::
   // obstacles): see CollisionGuardOptions.
   CollisionGuardOptions guard;
@@ -200,6 +207,10 @@ struct ExploreInput {
   // for only when backing up (CollisionGuardOptions::memory_s); empty: the
   // map alone is checked behind the robot.
   std::function<std::vector<Eigen::Vector2d>()> recent_returns;
+  // The returns of the scans of the last GoalManagerOptions::
+  // scan_check_memory_s seconds in the robot frame, for the scan check,
+  // asked for only when it runs; empty: the latest scan alone.
+  std::function<std::vector<Eigen::Vector2d>()> scan_check_returns;
   // True when the map or the frontier changed since the previous update.
   bool map_changed = false;
 };

@@ -172,6 +172,35 @@ TEST(GoalManagerTest, PassesOverGoalsWhosePathRunsIntoWhatTheLidarSees) {
   EXPECT_EQ(contradicted, 0);
 }
 
+TEST(GoalManagerTest, TheScanCheckCanUseTheScansOfTheLastSeconds) {
+  // As above, but the latest scan sees nothing across the corridor: the
+  // wall to the right was seen by the scans of the last seconds (the robot
+  // has turned away from it).
+  MapBuilder b{60, 20};
+  b.Wall(0, 0, 59, 19).Fill(1, 1, 58, 18, grid::CellState::kUnknown).Free(10, 1, 40, 18);
+  const std::vector<Eigen::Vector2d> frontier = b.FrontierPoints();
+  const Eigen::Vector2d robot = b.At(30, 10);
+  std::vector<Eigen::Vector2d> remembered;
+  for (double dy = -1.0; dy <= 1.0; dy += 0.05) remembered.emplace_back(0.5, dy);
+  const std::vector<Eigen::Vector2d> latest;
+  const auto first_goal = [&](double memory_s, bool memory_given) {
+    GoalManagerOptions o = NoStuckRecovery();
+    o.scan_check_memory_s = memory_s;
+    GoalManager gm = MakeManager(o);
+    gm.Start();
+    ExploreInput in = InputAt(0, robot, b.map(), frontier, true);
+    in.obstacles = &latest;
+    if (memory_given) in.scan_check_returns = [&remembered] { return remembered; };
+    const ExploreStatus s = gm.Update(in);
+    EXPECT_EQ(s.state, ExploreState::kDriving);
+    return s.goal.value_or(Eigen::Vector2d(NAN, NAN));
+  };
+  EXPECT_LT(first_goal(10.0, true).x(), robot.x());
+  // Memory off, or none given: the best goal, right.
+  EXPECT_GT(first_goal(0.0, true).x(), robot.x());
+  EXPECT_GT(first_goal(10.0, false).x(), robot.x());
+}
+
 TEST(GoalManagerTest, ProgressTimeoutMarksTheGoalFailedAndPicksAnother) {
   Room room;
   GoalManager gm = MakeManager();

@@ -1,6 +1,9 @@
 #include "scout/explore/scan_contradiction.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <unordered_set>
 
 #include "scout/geometry/segment.h"
 
@@ -29,6 +32,21 @@ bool PathCrossesReturns(const std::vector<Eigen::Vector2d>& path,
     if (near_segment(path[i - 1], path[i])) return true;
   }
   return false;
+}
+
+std::vector<Eigen::Vector2d> ThinToCells(const std::vector<Eigen::Vector2d>& points,
+                                         double cell_m) {
+  if (!(cell_m > 0.0)) return points;
+  std::unordered_set<uint64_t> seen;
+  seen.reserve(points.size());
+  std::vector<Eigen::Vector2d> kept;
+  for (const Eigen::Vector2d& p : points) {
+    // Cells of a few centimetres within kilometres fit 32 bits per axis.
+    const auto x = static_cast<uint32_t>(static_cast<int32_t>(std::floor(p.x() / cell_m)));
+    const auto y = static_cast<uint32_t>(static_cast<int32_t>(std::floor(p.y() / cell_m)));
+    if (seen.insert((static_cast<uint64_t>(x) << 32) | y).second) kept.push_back(p);
+  }
+  return kept;
 }
 
 }  // namespace scout::explore

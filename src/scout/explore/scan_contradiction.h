@@ -19,6 +19,12 @@ namespace scout::explore {
 bool PathCrossesReturns(const std::vector<Eigen::Vector2d>& path,
                         const std::vector<Eigen::Vector2d>& returns, double radius_m);
 
+// One point per square cell of side cell_m (the first of each, in order):
+// the returns of many scans of the same walls fall into the same cells, and
+// the check's cost grows with their number. Every input point lies within
+// cell_m * sqrt(2) of a kept one. cell_m <= 0 keeps them all.
+std::vector<Eigen::Vector2d> ThinToCells(const std::vector<Eigen::Vector2d>& points, double cell_m);
+
 }  // namespace scout::explore
 
 #endif  // SCOUT_EXPLORE_SCAN_CONTRADICTION_H_

@@ -23,6 +23,36 @@ TEST(PathCrossesReturns, ReturnsBesideThePathOrBeyondItsEndsAreNot) {
   EXPECT_FALSE(PathCrossesReturns({}, {{0, 0}}, 0.1));
 }
 
+TEST(ThinToCells, KeepsTheFirstPointOfEachCell) {
+  const std::vector<Eigen::Vector2d> points = {
+      {0.01, 0.01}, {0.04, 0.02}, {0.06, 0.01}, {-0.01, 0.01}, {0.011, 0.012}};
+  const std::vector<Eigen::Vector2d> kept = ThinToCells(points, 0.05);
+  ASSERT_EQ(kept.size(), 3u);
+  EXPECT_EQ(kept[0], points[0]);
+  EXPECT_EQ(kept[1], points[2]);
+  EXPECT_EQ(kept[2], points[3]);
+  EXPECT_EQ(ThinToCells(points, 0.0), points);
+  EXPECT_TRUE(ThinToCells({}, 0.05).empty());
+}
+
+RC_GTEST_PROP(ThinToCellsProperty, EveryPointHasAKeptOneWithinACellDiagonal, ()) {
+  const int n = *rc::gen::inRange(1, 200);
+  const double cell_m = *rc::gen::inRange(1, 100) * 0.01;
+  std::vector<Eigen::Vector2d> points;
+  for (int i = 0; i < n; ++i) {
+    points.emplace_back(*rc::gen::inRange(-5000, 5000) * 1e-3,
+                        *rc::gen::inRange(-5000, 5000) * 1e-3);
+  }
+  const std::vector<Eigen::Vector2d> kept = ThinToCells(points, cell_m);
+  RC_ASSERT(!kept.empty());
+  RC_ASSERT(kept.size() <= points.size());
+  for (const Eigen::Vector2d& p : points) {
+    double nearest = INFINITY;
+    for (const Eigen::Vector2d& k : kept) nearest = std::min(nearest, (p - k).norm());
+    RC_ASSERT(nearest <= cell_m * std::sqrt(2.0) + 1e-12);
+  }
+}
+
 TEST(PathCrossesReturns, APathOfOnePointIsThatPoint) {
   EXPECT_TRUE(PathCrossesReturns({{1, 1}}, {{1.05, 1}}, 0.1));
   EXPECT_FALSE(PathCrossesReturns({{1, 1}}, {{1.2, 1}}, 0.1));

@@ -34,6 +34,7 @@ void ReadGoals(YamlSection s, explore::GoalManagerOptions* o) {
   s.ReadNonNegativeAtMost("goal_match_radius_m", &o->goal_match_radius_m, 20.0);
   s.ReadNonNegativeAtMost("max_stand_off_m", &o->max_stand_off_m, 10.0);
   s.ReadNonNegativeAtMost("scan_check_radius_m", &o->scan_check_radius_m, 1.0);
+  s.ReadNonNegativeAtMost("scan_check_memory_s", &o->scan_check_memory_s, 600.0);
   s.ReadNonNegativeAtMost("stand_off_unknown_margin_m", &o->stand_off_unknown_margin_m, 1.0);
   s.ReadBool("return_to_start", &o->return_to_start);
   {

@@ -80,7 +80,8 @@ TEST_F(ExploreConfigTest, DefaultFileMatchesTheBuiltInDefaults) {
 TEST_F(ExploreConfigTest, ValuesAreReadWithTheirUnits) {
   const ScoutConfig c = Load(
       "explore:\n  max_sim_time_s: 120\n  initial_turn_deg: 90\n  goals:\n    return_to_start: "
-      "true\n    scan_check_radius_m: 0.15\n    stand_off_unknown_margin_m: 0.25\n    guard:\n     "
+      "true\n    scan_check_radius_m: 0.15\n    stand_off_unknown_margin_m: 0.25\n    "
+      "scan_check_memory_s: 8\n    guard:\n     "
       " predict_motion: true\n      "
       "stop_turn_radps: 0\n  follower:\n    "
       "rotate_in_place_heading_deg: "
@@ -90,6 +91,7 @@ TEST_F(ExploreConfigTest, ValuesAreReadWithTheirUnits) {
   EXPECT_TRUE(c.explore.goals.return_to_start);
   EXPECT_DOUBLE_EQ(c.explore.goals.scan_check_radius_m, 0.15);
   EXPECT_DOUBLE_EQ(c.explore.goals.stand_off_unknown_margin_m, 0.25);
+  EXPECT_DOUBLE_EQ(c.explore.goals.scan_check_memory_s, 8.0);
   EXPECT_TRUE(c.explore.goals.guard.predict_motion);
   EXPECT_EQ(c.explore.goals.guard.stop_turn_radps, 0.0);
   EXPECT_NEAR(c.explore.follower.rotate_in_place_heading_rad, std::numbers::pi / 6, 1e-12);
