@@ -74,22 +74,24 @@ std::vector<Eigen::Vector2d> CutAtStandOff(const PlanningMap& map,
                                            double max_back_off_m, double min_length_m,
                                            double unknown_margin_m) {
   if (path.size() < 2 || max_back_off_m <= 0.0) return path;
-  if (unknown_margin_m > 0.0) {
-    const double radius_m = map.options().robot_radius_m + unknown_margin_m;
-    const auto clear = [&map, radius_m](const Eigen::Vector2d& p) {
+  // Tiers, strictest first: the path itself when its end qualifies, else
+  // the path cut at the last qualifying point within the back-off.
+  const auto tier = [&](const auto& qualifies) -> std::optional<std::vector<Eigen::Vector2d>> {
+    if (qualifies(path.back())) return path;
+    return CutAtLast(map, path, max_back_off_m, min_length_m, qualifies);
+  };
+  const auto full_margin_with_disc = [&map](double radius_m) {
+    return [&map, radius_m](const Eigen::Vector2d& p) {
       return KeepsFullMargin(map, p) && DiscInKnownFree(map, p, radius_m);
     };
-    if (clear(path.back())) return path;
-    if (auto cut = CutAtLast(map, path, max_back_off_m, min_length_m, clear)) return *cut;
-  }
-  const auto full = [&map](const Eigen::Vector2d& p) {
-    return KeepsFullMargin(map, p) && DiscInKnownFree(map, p);
   };
-  if (full(path.back())) return path;
-  if (auto cut = CutAtLast(map, path, max_back_off_m, min_length_m, full)) return *cut;
-  if (DiscInKnownFree(map, path.back())) return path;
+  const double robot_radius_m = map.options().robot_radius_m;
+  if (unknown_margin_m > 0.0) {
+    if (auto cut = tier(full_margin_with_disc(robot_radius_m + unknown_margin_m))) return *cut;
+  }
+  if (auto cut = tier(full_margin_with_disc(robot_radius_m))) return *cut;
   const auto known = [&map](const Eigen::Vector2d& p) { return DiscInKnownFree(map, p); };
-  if (auto cut = CutAtLast(map, path, max_back_off_m, min_length_m, known)) return *cut;
+  if (auto cut = tier(known)) return *cut;
   return path;
 }
 
