@@ -158,7 +158,7 @@ struct GoalManagerOptions {
   // it saw a few seconds before, and a path round the end of the edge the
   // latest scan saw can run into it (museum seed 1 at 2898 s). 0: the
   // latest scan only.
-  double scan_check_memory_s = 0.0;
+  double scan_check_memory_s = 10.0;
   // Forward commands are checked against the latest scan (ExploreInput::
   // obstacles): see CollisionGuardOptions.
   CollisionGuardOptions guard;
