@@ -140,6 +140,9 @@ EXPLORE_POLICY_COMMIT=512946f
 # d13fac7 (Scout's policy passes over candidates whose path the latest scan contradicts) changes
 # the scout policy's runs only; an older one does not record whether the check would have fired.
 EXPLORE_SCAN_CHECK_COMMIT=d13fac7
+# 9847fb7 (the scan check also uses the returns of the last 10 s of scans) changes the scout
+# policy's runs only, like d13fac7.
+EXPLORE_SCAN_MEMORY_COMMIT=9847fb7
 stale_runs() {
   local name f
   for name in "$@"; do
@@ -153,7 +156,7 @@ stale_runs() {
         grep -Eq '"(guard_stops|recoveries)": *[1-9]' "$f"; } ||
       { made_before "$EXPLORE_POLICY_COMMIT" "$name" &&
         grep -Eq '"goals_policy": *"(scout|meanshift-centres)"' "$f"; } ||
-      { made_before "$EXPLORE_SCAN_CHECK_COMMIT" "$name" &&
+      { made_before "$EXPLORE_SCAN_MEMORY_COMMIT" "$name" &&
         grep -Eq '"goals_policy": *"scout"' "$f"; }; then
       printf '`%s` ' "$name"
     fi
@@ -356,8 +359,9 @@ write_document() {
       echo "$EXPLORE_STUCK_COMMIT with a stuck recovery, or than $EXPLORE_RETRY_COMMIT with reachable frontier"
       echo "left at the end, or than $EXPLORE_GUARD_COMMIT with a guard stop or a stuck recovery, or than"
       echo "$EXPLORE_POLICY_COMMIT for the scout and meanshift-centres policies (information gain weighed"
-      echo "1 instead of 3), or than $EXPLORE_SCAN_CHECK_COMMIT for the scout policy (paths checked against"
-      echo "the latest scan; the runs those commits change), so not like-for-like with the other runs: $stale"
+      echo "1 instead of 3), or than $EXPLORE_SCAN_MEMORY_COMMIT for the scout policy (paths checked against"
+      echo "the returns of the last 10 s of scans, $EXPLORE_SCAN_CHECK_COMMIT against the latest scan; the runs"
+      echo "those commits change), so not like-for-like with the other runs: $stale"
       echo
     fi
     tables explore "${EXPLORE[@]}"
