@@ -111,6 +111,7 @@ void ExactStrategy::Anchor(int i, Watch* w) {
   const AnswerMap& answers = catalog_.submap(w->j).answers;
   const double slack = catalog_.options().exact_slack_m;
   w->entries.clear();
+  w->has_entry.assign(points.size(), 0);
   const geometry::Rigid2d rel = Relative(i, w->j);
   w->coverage_anchor = w->key_anchor = rel;
   w->seen_version_i = catalog_.submap(i).pose_version;
@@ -133,6 +134,9 @@ void ExactStrategy::AddEntry(int i, uint32_t k, Watch* w, const AnswerMap& answe
   Mark(i, k);
   const bool objects = answers.Objects(q);
   Observe(i, k, w->j, objects);
+  // An entry the watch holds already is kept up to date by its passes (it is
+  // checked before it is relied on), so one per point is enough.
+  if (w->has_entry[k]) return;
   const double margin = answers.Margin(q) - kSafety_m;
   // Not stored: it keeps its answer while no point moves by 'slack' from the
   // coverage anchor (checked per pair).
@@ -146,6 +150,7 @@ void ExactStrategy::AddEntry(int i, uint32_t k, Watch* w, const AnswerMap& answe
   w->min_key_m = std::min(w->min_key_m, e.key_m);
   e.point = k;
   w->entries.push_back(e);
+  w->has_entry[k] = 1;
 }
 
 void ExactStrategy::Reevaluate(int i, Watch& w, const AnswerMap& answers, const Eigen::Vector2d& p,
@@ -173,6 +178,12 @@ void ExactStrategy::Rekey(int i, Watch* w) {
   }
 }
 
+bool ExactStrategy::KeepInPass(int i, const Entry& e, Watch* w) {
+  if (Tracks(i, e.point, w->j)) return true;
+  w->has_entry[e.point] = 0;
+  return false;
+}
+
 void ExactStrategy::Refresh(int i, Watch* w) {
   const uint64_t version_i = catalog_.submap(i).pose_version;
   const uint64_t version_j = catalog_.submap(w->j).pose_version;
@@ -192,20 +203,23 @@ void ExactStrategy::Refresh(int i, Watch* w) {
   const std::vector<Eigen::Vector2d>& points = catalog_.submap(i).frontier.points_m;
   const AnswerMap& answers = catalog_.submap(w->j).answers;
   // A pass over the keys (no transforms) finds the entries the bound does not
-  // clear; only those are checked exactly.
+  // clear; only those are checked exactly. The same pass drops the entries
+  // the watch no longer needs (KeepInPass).
   size_t checked = 0;
   float min_key_m = std::numeric_limits<float>::infinity();
+  size_t kept = 0;
   for (Entry& e : w->entries) {
-    if (e.key_m >= bound) {
-      min_key_m = std::min(min_key_m, e.key_m);
-      continue;
+    if (!KeepInPass(i, e, w)) continue;
+    if (e.key_m < bound) {
+      ++checked;
+      const Eigen::Vector2d& p = points[e.point];
+      const Eigen::Vector2d q = catalog_.PointInSubmap(i, p, w->j);
+      if ((q - RefOf(e)).norm() >= e.ref_margin_m) Reevaluate(i, *w, answers, p, q, &e);
     }
-    ++checked;
-    const Eigen::Vector2d& p = points[e.point];
-    const Eigen::Vector2d q = catalog_.PointInSubmap(i, p, w->j);
-    if ((q - RefOf(e)).norm() >= e.ref_margin_m) Reevaluate(i, *w, answers, p, q, &e);
     min_key_m = std::min(min_key_m, e.key_m);
+    w->entries[kept++] = e;
   }
+  w->entries.resize(kept);
   w->min_key_m = min_key_m;
   // When most entries need a check each round, move the keys to the current pose.
   if (2 * checked > w->entries.size()) Rekey(i, w);
@@ -219,21 +233,24 @@ void ExactStrategy::ReviewNearChange(int i, Watch* w, const geometry::Box2d& reg
   if (region.DistanceTo(w->center) >= w->radius_m + slack + std::max(slack, MarginCap())) return;
   const std::vector<Eigen::Vector2d>& points = catalog_.submap(i).frontier.points_m;
   const AnswerMap& answers = catalog_.submap(w->j).answers;
-  std::vector<uint8_t> has_entry(points.size(), 0);
+  size_t kept = 0;
   for (Entry& e : w->entries) {
-    has_entry[e.point] = 1;
+    if (!KeepInPass(i, e, w)) continue;
     // The recorded answer holds at q_ref itself and within its margin; a
     // margin of 0 (q_ref on a boundary) still needs q_ref outside the region.
     const double to_region = region.DistanceTo(RefOf(e));
-    if (to_region > 0.0 && to_region >= e.ref_margin_m) continue;
-    const Eigen::Vector2d& p = points[e.point];
-    Reevaluate(i, *w, answers, p, catalog_.PointInSubmap(i, p, w->j), &e);
+    if (to_region <= 0.0 || to_region < e.ref_margin_m) {
+      const Eigen::Vector2d& p = points[e.point];
+      Reevaluate(i, *w, answers, p, catalog_.PointInSubmap(i, p, w->j), &e);
+    }
+    w->entries[kept++] = e;
   }
+  w->entries.resize(kept);
   // Unstored points were safe for 'slack' around their coverage position under
   // the old answers; near the change that no longer holds.
   // Points the watch does not track (witnessed elsewhere) need no answer here.
   for (uint32_t k = 0; k < points.size(); ++k) {
-    if (has_entry[k] || !Tracks(i, k, w->j)) continue;
+    if (w->has_entry[k] || !Tracks(i, k, w->j)) continue;
     if (region.DistanceTo(w->coverage_anchor * points[k]) >= slack + kSafety_m) continue;
     AddEntry(i, k, w, answers, slack);
   }
@@ -355,6 +372,8 @@ void ExactStrategy::RemapOwnWatches(const SubmapChange& change) {
       kept.push_back(e);
     }
     w.entries = std::move(kept);
+    w.has_entry.assign(n, 0);
+    for (const Entry& e : w.entries) w.has_entry[e.point] = 1;
     // New points join the coverage disc; ResolveLost looks them up below.
     for (size_t k = 0; k < n; ++k) {
       if (change.previous_index[k] >= 0) continue;

@@ -69,6 +69,9 @@ class ExactStrategy : public UpdateStrategy {
     Eigen::Vector2d key_center = Eigen::Vector2d::Zero();  // the same disc under key_anchor
     double radius_m = 0.0;
     std::vector<Entry> entries;
+    // Per point of i: 1 if 'entries' holds one for it (never two: a point
+    // that loses its witness and is added again keeps its entry).
+    std::vector<uint8_t> has_entry;
     float min_key_m = 0.0f;  // no entry's key is smaller
     // Pose versions of i and j when the watch was last brought up to date:
     // while neither submap moves, the watch needs no work.
@@ -81,6 +84,10 @@ class ExactStrategy : public UpdateStrategy {
   void Anchor(int i, Watch* watch);
   // Brings one watch up to date with the current poses.
   void Refresh(int i, Watch* watch);
+  // Whether a pass over a watch's entries keeps entry 'e': an entry whose
+  // point the watch no longer tracks (another submap became its witness) is
+  // dropped, so passes and checks do not grow with the run.
+  bool KeepInPass(int i, const Entry& e, Watch* watch);
   // Looks up point k of i in the watch's submap and stores an entry unless the
   // slack covers it (objecting answers are always stored).
   void AddEntry(int i, uint32_t k, Watch* watch, const AnswerMap& answers, double slack_m);

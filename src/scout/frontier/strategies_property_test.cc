@@ -6,6 +6,7 @@
 
 #include <algorithm>
 
+#include "scout/frontier/exact_strategy.h"
 #include "scout/frontier/frontier_engine.h"
 #include "scout/frontier/random_scenario.h"
 
@@ -165,6 +166,36 @@ TEST(Strategies, ExactUpdatesASubmapThatStaysWhenItsCoverMovesAwayAndBack) {
   // Submap 0's frontier is hidden while 1 covers it, and its own once 1 left.
   EXPECT_GT(uncovered, covered);
   EXPECT_EQ(uncovered, static_cast<int64_t>(engine.catalog().submap(0).frontier.points_m.size()));
+}
+
+// A point whose witness comes and goes is added again to the watches that do
+// not object; a watch that held it already must not hold it twice, or a long
+// run's passes grow with every loop closure that uncovers it.
+TEST(Strategies, ExactKeepsOneEntryPerPointWhileItsWitnessComesAndGoes) {
+  RandomScenario s(11, {});
+  FrontierOptions options;
+  options.inflation_radius_m = 0.1;
+  FrontierEngine engine(options, {"full", "exact"}, true);
+  const geometry::Rigid2d pose = s.TruePose();
+  // 0 and 2 see as far around the same place: neither objects at the other's
+  // frontier ring. 1 sees farther and covers both rings while it is there.
+  engine.Apply(s.MakeSubmap(0, pose, 1.0));
+  engine.Apply(s.MakeSubmap(1, pose, 2.5));
+  engine.Apply(s.MakeSubmap(2, pose, 1.0));
+  const geometry::Rigid2d away(pose.x() + 40.0, pose.y(), pose.theta());
+  const auto& exact = dynamic_cast<const ExactStrategy&>(engine.strategy("exact"));
+  std::vector<int64_t> entries;
+  for (int cycle = 0; cycle < 6; ++cycle) {
+    engine.Apply(events::Optimized{{pose, pose, pose}});
+    engine.Apply(events::Optimized{{pose, away, pose}});
+    for (int i = 0; i < 3; ++i) {
+      EXPECT_EQ(exact.answers(i), engine.strategy("full").answers(i)) << "cycle " << cycle;
+    }
+    entries.push_back(exact.num_entries());
+  }
+  // The uncovered rings are stored (their margins are small), the same ones every cycle.
+  EXPECT_GT(entries.front(), 0);
+  for (const int64_t n : entries) EXPECT_EQ(n, entries.front());
 }
 
 }  // namespace
