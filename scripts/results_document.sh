@@ -165,8 +165,9 @@ stale_runs() {
 
 # b77b701: exact follows one witness per point that is not a frontier. It answers as before
 # (always as full) but queries fewer points, with different times, so a replay or frontier-bench run
-# older than it reports the earlier exact.
-FRONTIER_EXACT_COMMIT=b77b701
+# older than it reports the earlier exact. ad112e7: exact drops the entries of points a watch no
+# longer tracks and keeps one per point (same answers, fewer points re-queried, less time).
+FRONTIER_EXACT_COMMIT=ad112e7
 # stale_since COMMIT NAME...: the finished runs whose build does not contain COMMIT.
 stale_since() {
   local commit=$1 name
@@ -197,8 +198,9 @@ stale_note() {
   local stale
   stale=$(stale_since "$FRONTIER_EXACT_COMMIT" "$@")
   [[ -z $stale ]] && return 0
-  echo "Made with a build older than commit $FRONTIER_EXACT_COMMIT (\`exact\` with witnesses), so"
-  echo "their \`exact\` rows show the earlier \`exact\`: $stale"
+  echo "Made with a build older than commit $FRONTIER_EXACT_COMMIT (\`exact\` keeps no stale entries),"
+  echo "so their \`exact\` rows show the earlier \`exact\` (the same answers, with more points"
+  echo "re-queried and more time per round): $stale"
   echo
 }
 
