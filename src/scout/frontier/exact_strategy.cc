@@ -111,7 +111,7 @@ void ExactStrategy::Anchor(int i, Watch* w) {
   const AnswerMap& answers = catalog_.submap(w->j).answers;
   const double slack = catalog_.options().exact_slack_m;
   w->entries.clear();
-  w->has_entry.assign(points.size(), 0);
+  w->has_entry.assign(points.size(), false);
   const geometry::Rigid2d rel = Relative(i, w->j);
   w->coverage_anchor = w->key_anchor = rel;
   w->seen_version_i = catalog_.submap(i).pose_version;
@@ -150,7 +150,7 @@ void ExactStrategy::AddEntry(int i, uint32_t k, Watch* w, const AnswerMap& answe
   w->min_key_m = std::min(w->min_key_m, e.key_m);
   e.point = k;
   w->entries.push_back(e);
-  w->has_entry[k] = 1;
+  w->has_entry[k] = true;
 }
 
 void ExactStrategy::Reevaluate(int i, Watch& w, const AnswerMap& answers, const Eigen::Vector2d& p,
@@ -180,7 +180,7 @@ void ExactStrategy::Rekey(int i, Watch* w) {
 
 bool ExactStrategy::KeepInPass(int i, const Entry& e, Watch* w) {
   if (Tracks(i, e.point, w->j)) return true;
-  w->has_entry[e.point] = 0;
+  w->has_entry[e.point] = false;
   return false;
 }
 
@@ -372,8 +372,8 @@ void ExactStrategy::RemapOwnWatches(const SubmapChange& change) {
       kept.push_back(e);
     }
     w.entries = std::move(kept);
-    w.has_entry.assign(n, 0);
-    for (const Entry& e : w.entries) w.has_entry[e.point] = 1;
+    w.has_entry.assign(n, false);
+    for (const Entry& e : w.entries) w.has_entry[e.point] = true;
     // New points join the coverage disc; ResolveLost looks them up below.
     for (size_t k = 0; k < n; ++k) {
       if (change.previous_index[k] >= 0) continue;

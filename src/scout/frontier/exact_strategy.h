@@ -69,9 +69,10 @@ class ExactStrategy : public UpdateStrategy {
     Eigen::Vector2d key_center = Eigen::Vector2d::Zero();  // the same disc under key_anchor
     double radius_m = 0.0;
     std::vector<Entry> entries;
-    // Per point of i: 1 if 'entries' holds one for it (never two: a point
-    // that loses its witness and is added again keeps its entry).
-    std::vector<uint8_t> has_entry;
+    // Per point of i: whether 'entries' holds one for it (never two: a point
+    // that loses its witness and is added again keeps its entry). Bits: the
+    // watches' points add up to hundreds of millions in a 200 m world.
+    std::vector<bool> has_entry;
     float min_key_m = 0.0f;  // no entry's key is smaller
     // Pose versions of i and j when the watch was last brought up to date:
     // while neither submap moves, the watch needs no work.
