@@ -139,19 +139,29 @@ TEST(Strategies, ScenariosExerciseBothAnswersAndInexactStrategiesErr) {
   EXPECT_GT(inexact_errors, 0);
 }
 
+// Submap 0 and submap 1, which sees farther around the same place and covers
+// 0's frontier ring while it is there; 'away' is a pose of 1 far from 0.
+class CoverMovesAway : public ::testing::Test {
+ protected:
+  static FrontierOptions Options() {
+    FrontierOptions options;
+    options.inflation_radius_m = 0.1;
+    return options;
+  }
+  CoverMovesAway() {
+    engine.Apply(s.MakeSubmap(0, pose, 1.0));
+    engine.Apply(s.MakeSubmap(1, pose, 2.5));
+  }
+  RandomScenario s{11, {}};
+  FrontierEngine engine{Options(), {"full", "exact"}, true};
+  const geometry::Rigid2d pose = s.TruePose();
+  const geometry::Rigid2d away{pose.x() + 40.0, pose.y(), pose.theta()};
+};
+
 // Exact updates only the submaps an optimisation can affect. A submap that
 // does not move must still be updated when the one submap that covered its
 // frontier moves away, and again when it moves back over it.
-TEST(Strategies, ExactUpdatesASubmapThatStaysWhenItsCoverMovesAwayAndBack) {
-  RandomScenario s(11, {});
-  FrontierOptions options;
-  options.inflation_radius_m = 0.1;
-  FrontierEngine engine(options, {"full", "exact"}, true);
-  const geometry::Rigid2d pose = s.TruePose();
-  // Submap 1 sees farther around the same place: it covers 0's frontier ring.
-  engine.Apply(s.MakeSubmap(0, pose, 1.0));
-  engine.Apply(s.MakeSubmap(1, pose, 2.5));
-  const geometry::Rigid2d away(pose.x() + 40.0, pose.y(), pose.theta());
+TEST_F(CoverMovesAway, ExactUpdatesASubmapThatStaysWhenItsCoverMovesAwayAndBack) {
   const auto frontier_points_of_0 = [&] {
     const std::vector<uint8_t>& full = engine.strategy("full").answers(0);
     EXPECT_EQ(engine.strategy("exact").answers(0), full);
@@ -171,18 +181,10 @@ TEST(Strategies, ExactUpdatesASubmapThatStaysWhenItsCoverMovesAwayAndBack) {
 // A point whose witness comes and goes is added again to the watches that do
 // not object; a watch that held it already must not hold it twice, or a long
 // run's passes grow with every loop closure that uncovers it.
-TEST(Strategies, ExactKeepsOneEntryPerPointWhileItsWitnessComesAndGoes) {
-  RandomScenario s(11, {});
-  FrontierOptions options;
-  options.inflation_radius_m = 0.1;
-  FrontierEngine engine(options, {"full", "exact"}, true);
-  const geometry::Rigid2d pose = s.TruePose();
-  // 0 and 2 see as far around the same place: neither objects at the other's
-  // frontier ring. 1 sees farther and covers both rings while it is there.
-  engine.Apply(s.MakeSubmap(0, pose, 1.0));
-  engine.Apply(s.MakeSubmap(1, pose, 2.5));
+TEST_F(CoverMovesAway, ExactKeepsOneEntryPerPointWhileItsWitnessComesAndGoes) {
+  // 2 sees as far as 0 around the same place: neither objects at the other's
+  // frontier ring, and 1 covers both rings while it is there.
   engine.Apply(s.MakeSubmap(2, pose, 1.0));
-  const geometry::Rigid2d away(pose.x() + 40.0, pose.y(), pose.theta());
   const auto& exact = dynamic_cast<const ExactStrategy&>(engine.strategy("exact"));
   std::vector<int64_t> entries;
   for (int cycle = 0; cycle < 6; ++cycle) {
