@@ -178,10 +178,18 @@ void ExactStrategy::Rekey(int i, Watch* w) {
   }
 }
 
-bool ExactStrategy::KeepInPass(int i, const Entry& e, Watch* w) {
-  if (Tracks(i, e.point, w->j)) return true;
-  w->has_entry[e.point] = false;
-  return false;
+template <typename Visit>
+void ExactStrategy::PassOverTracked(int i, Watch* w, const Visit& visit) {
+  size_t kept = 0;
+  for (Entry& e : w->entries) {
+    if (!Tracks(i, e.point, w->j)) {
+      w->has_entry[e.point] = false;
+      continue;
+    }
+    visit(e);
+    w->entries[kept++] = e;
+  }
+  w->entries.resize(kept);
 }
 
 void ExactStrategy::Refresh(int i, Watch* w) {
@@ -204,12 +212,10 @@ void ExactStrategy::Refresh(int i, Watch* w) {
   const AnswerMap& answers = catalog_.submap(w->j).answers;
   // A pass over the keys (no transforms) finds the entries the bound does not
   // clear; only those are checked exactly. The same pass drops the entries
-  // the watch no longer needs (KeepInPass).
+  // the watch no longer needs.
   size_t checked = 0;
   float min_key_m = std::numeric_limits<float>::infinity();
-  size_t kept = 0;
-  for (Entry& e : w->entries) {
-    if (!KeepInPass(i, e, w)) continue;
+  PassOverTracked(i, w, [&](Entry& e) {
     if (e.key_m < bound) {
       ++checked;
       const Eigen::Vector2d& p = points[e.point];
@@ -217,9 +223,7 @@ void ExactStrategy::Refresh(int i, Watch* w) {
       if ((q - RefOf(e)).norm() >= e.ref_margin_m) Reevaluate(i, *w, answers, p, q, &e);
     }
     min_key_m = std::min(min_key_m, e.key_m);
-    w->entries[kept++] = e;
-  }
-  w->entries.resize(kept);
+  });
   w->min_key_m = min_key_m;
   // When most entries need a check each round, move the keys to the current pose.
   if (2 * checked > w->entries.size()) Rekey(i, w);
@@ -233,19 +237,14 @@ void ExactStrategy::ReviewNearChange(int i, Watch* w, const geometry::Box2d& reg
   if (region.DistanceTo(w->center) >= w->radius_m + slack + std::max(slack, MarginCap())) return;
   const std::vector<Eigen::Vector2d>& points = catalog_.submap(i).frontier.points_m;
   const AnswerMap& answers = catalog_.submap(w->j).answers;
-  size_t kept = 0;
-  for (Entry& e : w->entries) {
-    if (!KeepInPass(i, e, w)) continue;
+  PassOverTracked(i, w, [&](Entry& e) {
     // The recorded answer holds at q_ref itself and within its margin; a
     // margin of 0 (q_ref on a boundary) still needs q_ref outside the region.
     const double to_region = region.DistanceTo(RefOf(e));
-    if (to_region <= 0.0 || to_region < e.ref_margin_m) {
-      const Eigen::Vector2d& p = points[e.point];
-      Reevaluate(i, *w, answers, p, catalog_.PointInSubmap(i, p, w->j), &e);
-    }
-    w->entries[kept++] = e;
-  }
-  w->entries.resize(kept);
+    if (to_region > 0.0 && to_region >= e.ref_margin_m) return;
+    const Eigen::Vector2d& p = points[e.point];
+    Reevaluate(i, *w, answers, p, catalog_.PointInSubmap(i, p, w->j), &e);
+  });
   // Unstored points were safe for 'slack' around their coverage position under
   // the old answers; near the change that no longer holds.
   // Points the watch does not track (witnessed elsewhere) need no answer here.

@@ -85,10 +85,11 @@ class ExactStrategy : public UpdateStrategy {
   void Anchor(int i, Watch* watch);
   // Brings one watch up to date with the current poses.
   void Refresh(int i, Watch* watch);
-  // Whether a pass over a watch's entries keeps entry 'e': an entry whose
-  // point the watch no longer tracks (another submap became its witness) is
-  // dropped, so passes and checks do not grow with the run.
-  bool KeepInPass(int i, const Entry& e, Watch* watch);
+  // Calls visit(entry) for every entry of the watch whose point it still
+  // tracks and drops the others (another submap became their witness), so
+  // passes and checks do not grow with the run.
+  template <typename Visit>
+  void PassOverTracked(int i, Watch* watch, const Visit& visit);
   // Looks up point k of i in the watch's submap and stores an entry unless the
   // slack covers it (objecting answers are always stored).
   void AddEntry(int i, uint32_t k, Watch* watch, const AnswerMap& answers, double slack_m);
