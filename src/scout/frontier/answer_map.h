@@ -4,6 +4,7 @@
 #include <Eigen/Core>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "scout/grid/cell_state.h"
@@ -55,6 +56,13 @@ class AnswerMap {
 
   // Number of objecting cells.
   int64_t num_objecting_cells() const { return num_objecting_; }
+
+  // Smallest distance from an objecting cell to the grid's border (infinity if
+  // no cell objects): a position outside the grid has at least its distance to
+  // the grid plus this as its margin.
+  double objecting_to_border_m() const {
+    return num_objecting_ == 0 ? std::numeric_limits<double>::infinity() : objecting_to_border_m_;
+  }
 
  private:
   static constexpr uint8_t kObjectsBit = 0x80;

@@ -48,9 +48,13 @@ void ExactStrategy::ResolveLost(int i) {
     // Another watch may have objected since the point was queued.
     if (witness_[i][k] != kLost) continue;
     const Eigen::Vector2d& p = points[k];
+    const Eigen::Vector2d global = catalog_.submap(i).global_pose * p;
     for (Watch& w : watches_[i]) {
+      const SubmapRecord& submap_j = catalog_.submap(w.j);
+      // Outside j's box j cannot object: no look-up.
+      if (!submap_j.global_box.Contains(global)) continue;
       Mark(i, k);
-      if (catalog_.submap(w.j).answers.Objects(catalog_.PointInSubmap(i, p, w.j))) {
+      if (submap_j.answers.Objects(submap_j.global_pose_inverse * global)) {
         AddEntry(i, k, &w, catalog_.submap(w.j).answers, slack);  // stores it, sets the witness
         break;
       }
@@ -130,7 +134,22 @@ void ExactStrategy::Anchor(int i, Watch* w) {
 void ExactStrategy::AddEntry(int i, uint32_t k, Watch* w, const AnswerMap& answers,
                              double slack_m) {
   const Eigen::Vector2d& p = catalog_.submap(i).frontier.points_m[k];
-  const Eigen::Vector2d q = catalog_.PointInSubmap(i, p, w->j);
+  const SubmapRecord& submap_j = catalog_.submap(w->j);
+  // The same arithmetic as PointInSubmap.
+  const Eigen::Vector2d global = catalog_.submap(i).global_pose * p;
+  const Eigen::Vector2d q = submap_j.global_pose_inverse * global;
+  // Outside j's box j objects nowhere, and its margin there is at least the
+  // distance to the box plus how far its objecting cells keep from the grid's
+  // border. Most points of a pair whose boxes meet lie outside the other's
+  // grid; when that margin alone covers one, it needs no look-up.
+  if (!w->has_entry[k]) {
+    const double outside_m = submap_j.global_box.DistanceTo(global);
+    if (outside_m > 0.0 && outside_m + answers.objecting_to_border_m() - kSafety_m >=
+                               slack_m + (q - w->coverage_anchor * p).norm()) {
+      Observe(i, k, w->j, false);
+      return;
+    }
+  }
   Mark(i, k);
   const bool objects = answers.Objects(q);
   Observe(i, k, w->j, objects);

@@ -5,6 +5,8 @@
 #include <rapidcheck/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 #include "scout/frontier/exact_strategy.h"
 #include "scout/frontier/frontier_engine.h"
@@ -198,6 +200,47 @@ TEST_F(CoverMovesAway, ExactKeepsOneEntryPerPointWhileItsWitnessComesAndGoes) {
   // The uncovered rings are stored (their margins are small), the same ones every cycle.
   EXPECT_GT(entries.front(), 0);
   for (const int64_t n : entries) EXPECT_EQ(n, entries.front());
+}
+
+// Most points of a pair whose boxes meet lie outside the other submap's grid,
+// where it objects nowhere. Here the corner of submap 1's box reaches into the
+// box of submap 0's frontier ring, the ring itself does not: when 1 moves by
+// more than the slack, exact proves from the box distance alone that 1 still
+// objects at none of the ring's points, and looks none of them up.
+TEST(ExactStrategy, ProvesPointsOutsideTheOtherGridWithoutLookUps) {
+  testing::RandomScenarioOptions o;
+  o.wall_density = 0.0;  // a whole ring
+  RandomScenario s(5, o);
+  FrontierOptions options;
+  options.inflation_radius_m = 0.1;
+  FrontierEngine engine(options, {"full", "exact"}, true);
+  const geometry::Rigid2d pose(6.0, 6.0, 0.0);
+  engine.Apply(s.MakeSubmap(0, pose, 1.8));
+  engine.Apply(s.MakeSubmap(1, pose, 1.0));
+  engine.Flush();  // grid changes wait for the next round by default
+  const SubmapCatalog& catalog = engine.catalog();
+  std::vector<Eigen::Vector2d> ring;
+  for (const Eigen::Vector2d& p : catalog.submap(0).frontier.points_m) ring.push_back(pose * p);
+  ASSERT_FALSE(ring.empty());
+  // How far into the north-east corner the ring reaches (global frame).
+  double ring_corner = -std::numeric_limits<double>::infinity();
+  for (const Eigen::Vector2d& g : ring) ring_corner = std::max(ring_corner, std::min(g.x(), g.y()));
+  const double box_corner = catalog.GlobalPointsBox(0).max.x();
+  const double half_size = o.submap_size_m / 2;
+  // Submap 1's south-west corner at 'corner' on the diagonal.
+  const auto with_corner_at = [&](double corner) {
+    return geometry::Rigid2d(corner + half_size, corner + half_size, 0.0);
+  };
+  const double before = ring_corner + 0.05, after = box_corner - 0.05;
+  ASSERT_GT((after - before) * std::sqrt(2.0), options.exact_slack_m);  // a re-anchoring move
+  for (const double corner : {before, after}) {
+    engine.Apply(events::Optimized{{pose, with_corner_at(corner)}});
+    ASSERT_TRUE(catalog.submap(1).global_box.Intersects(catalog.GlobalPointsBox(0)));
+    for (const Eigen::Vector2d& g : ring) ASSERT_FALSE(catalog.submap(1).global_box.Contains(g));
+    EXPECT_EQ(engine.strategy("exact").answers(0), engine.strategy("full").answers(0));
+  }
+  EXPECT_EQ(LastRound(engine, "exact").cost.queried_points, 0);
+  EXPECT_GT(LastRound(engine, "full").cost.queried_points, 0);
 }
 
 }  // namespace
