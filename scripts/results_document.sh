@@ -167,7 +167,9 @@ stale_runs() {
 # (always as full) but queries fewer points, with different times, so a replay or frontier-bench run
 # older than it reports the earlier exact. ad112e7: exact drops the entries of points a watch no
 # longer tracks and keeps one per point (same answers, fewer points re-queried, less time).
-FRONTIER_EXACT_COMMIT=ad112e7
+# 55f8ae9: exact proves points outside the other submap's box without a look-up (same answers,
+# fewer points re-queried).
+FRONTIER_EXACT_COMMIT=55f8ae9
 # stale_since COMMIT NAME...: the finished runs whose build does not contain COMMIT.
 stale_since() {
   local commit=$1 name
@@ -198,7 +200,7 @@ stale_note() {
   local stale
   stale=$(stale_since "$FRONTIER_EXACT_COMMIT" "$@")
   [[ -z $stale ]] && return 0
-  echo "Made with a build older than commit $FRONTIER_EXACT_COMMIT (\`exact\` keeps no stale entries),"
+  echo "Made with a build older than commit $FRONTIER_EXACT_COMMIT (\`exact\` skips the look-ups a box proves),"
   echo "so their \`exact\` rows show the earlier \`exact\` (the same answers, with more points"
   echo "re-queried and more time per round): $stale"
   echo
