@@ -55,7 +55,7 @@ void ExactStrategy::ResolveLost(int i) {
       if (!submap_j.global_box.Contains(global)) continue;
       Mark(i, k);
       if (submap_j.answers.Objects(submap_j.global_pose_inverse * global)) {
-        AddEntry(i, k, &w, catalog_.submap(w.j).answers, slack);  // stores it, sets the witness
+        AddEntry(i, k, &w, submap_j.answers, slack);  // stores it, sets the witness
         break;
       }
     }
