@@ -48,14 +48,14 @@ void ExactStrategy::ResolveLost(int i) {
     // Another watch may have objected since the point was queued.
     if (witness_[i][k] != kLost) continue;
     const Eigen::Vector2d& p = points[k];
-    const Eigen::Vector2d global = catalog_.submap(i).global_pose * p;
+    const Eigen::Vector2d global = catalog_.GlobalPosition(i, p);
     for (Watch& w : watches_[i]) {
       const SubmapRecord& submap_j = catalog_.submap(w.j);
       // Outside j's box j cannot object: no look-up.
       if (!submap_j.global_box.Contains(global)) continue;
       Mark(i, k);
-      if (submap_j.answers.Objects(submap_j.global_pose_inverse * global)) {
-        AddEntry(i, k, &w, submap_j.answers, slack);  // stores it, sets the witness
+      if (submap_j.answers.Objects(catalog_.GlobalInSubmap(global, w.j))) {
+        AddEntry(i, k, &w, slack);  // stores it, sets the witness
         break;
       }
     }
@@ -63,7 +63,7 @@ void ExactStrategy::ResolveLost(int i) {
     // Nobody objects: a frontier, which every watch must store or cover.
     witness_[i][k] = kNoWitness;
     is_frontier_[i][k] = 1;
-    for (Watch& w : watches_[i]) AddEntry(i, k, &w, catalog_.submap(w.j).answers, slack);
+    for (Watch& w : watches_[i]) AddEntry(i, k, &w, slack);
   }
 }
 
@@ -112,7 +112,6 @@ ExactStrategy::Watch* ExactStrategy::FindWatch(int i, int j) {
 
 void ExactStrategy::Anchor(int i, Watch* w) {
   const std::vector<Eigen::Vector2d>& points = catalog_.submap(i).frontier.points_m;
-  const AnswerMap& answers = catalog_.submap(w->j).answers;
   const double slack = catalog_.options().exact_slack_m;
   w->entries.clear();
   w->has_entry.assign(points.size(), false);
@@ -127,17 +126,16 @@ void ExactStrategy::Anchor(int i, Watch* w) {
   w->min_key_m = std::numeric_limits<float>::infinity();
   w->radius_m = disc.radius_m + kSafety_m;
   for (uint32_t k = 0; k < points.size(); ++k) {
-    if (Tracks(i, k, w->j)) AddEntry(i, k, w, answers, slack);
+    if (Tracks(i, k, w->j)) AddEntry(i, k, w, slack);
   }
 }
 
-void ExactStrategy::AddEntry(int i, uint32_t k, Watch* w, const AnswerMap& answers,
-                             double slack_m) {
+void ExactStrategy::AddEntry(int i, uint32_t k, Watch* w, double slack_m) {
   const Eigen::Vector2d& p = catalog_.submap(i).frontier.points_m[k];
   const SubmapRecord& submap_j = catalog_.submap(w->j);
-  // The same arithmetic as PointInSubmap.
-  const Eigen::Vector2d global = catalog_.submap(i).global_pose * p;
-  const Eigen::Vector2d q = submap_j.global_pose_inverse * global;
+  const AnswerMap& answers = submap_j.answers;
+  const Eigen::Vector2d global = catalog_.GlobalPosition(i, p);
+  const Eigen::Vector2d q = catalog_.GlobalInSubmap(global, w->j);
   // Outside j's box j objects nowhere, and its margin there is at least the
   // distance to the box plus how far its objecting cells keep from the grid's
   // border. Most points of a pair whose boxes meet lie outside the other's
@@ -270,7 +268,7 @@ void ExactStrategy::ReviewNearChange(int i, Watch* w, const geometry::Box2d& reg
   for (uint32_t k = 0; k < points.size(); ++k) {
     if (w->has_entry[k] || !Tracks(i, k, w->j)) continue;
     if (region.DistanceTo(w->coverage_anchor * points[k]) >= slack + kSafety_m) continue;
-    AddEntry(i, k, w, answers, slack);
+    AddEntry(i, k, w, slack);
   }
 }
 

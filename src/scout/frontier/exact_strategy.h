@@ -92,7 +92,7 @@ class ExactStrategy : public UpdateStrategy {
   void PassOverTracked(int i, Watch* watch, const Visit& visit);
   // Looks up point k of i in the watch's submap and stores an entry unless the
   // slack covers it (objecting answers are always stored).
-  void AddEntry(int i, uint32_t k, Watch* watch, const AnswerMap& answers, double slack_m);
+  void AddEntry(int i, uint32_t k, Watch* watch, double slack_m);
   // Whether the watch on j must track point k of i: k is a frontier or j is
   // its witness.
   bool Tracks(int i, uint32_t k, int j) const {

@@ -73,11 +73,15 @@ class SubmapCatalog {
   Eigen::Vector2d GlobalPosition(int i, const Eigen::Vector2d& p) const {
     return submaps_[i].global_pose * p;
   }
+  // Returns where the global position 'global' lies in submap 'j''s frame.
+  Eigen::Vector2d GlobalInSubmap(const Eigen::Vector2d& global, int j) const {
+    return submaps_[j].global_pose_inverse * global;
+  }
   // Returns where point 'p' of submap 'i' lies in submap 'j''s frame. Every
-  // strategy computes positions through this one function, so all of them
-  // look up bit-identical positions.
+  // strategy computes positions through this function (or the two above, in
+  // the same order), so all of them look up bit-identical positions.
   Eigen::Vector2d PointInSubmap(int i, const Eigen::Vector2d& p, int j) const {
-    return submaps_[j].global_pose_inverse * (submaps_[i].global_pose * p);
+    return GlobalInSubmap(GlobalPosition(i, p), j);
   }
   // Returns the global box of submap 'i''s frontier points.
   geometry::Box2d GlobalPointsBox(int i) const;
