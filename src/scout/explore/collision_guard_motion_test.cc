@@ -16,7 +16,7 @@
 namespace scout::explore {
 namespace {
 
-constexpr double kRadius = 0.2;
+constexpr double kRobotRadiusM = 0.2;
 constexpr double kAccel = 0.5;         // m/s², the simulated robot's
 constexpr double kAngularAccel = 2.0;  // rad/s²
 constexpr double kPeriod = 0.05;       // s, the explore loop's control step
@@ -66,7 +66,7 @@ double ClosestApproachOfABase(const std::vector<VelocityCommand>& commands,
     }
     const VelocityCommand& wanted = commands[std::min<size_t>(step, commands.size() - 1)];
     const BaseMotion base = Base(v, w);
-    const GuardedCommand g = GuardCommand(wanted, local, kRadius, options, 1.0, &base);
+    const GuardedCommand g = GuardCommand(wanted, local, kRobotRadiusM, options, 1.0, &base);
     v = Ramp(v, g.command.linear_mps, kAccel * kPeriod);
     w = Ramp(w, g.command.angular_radps, kAngularAccel * kPeriod);
     constexpr int kSubsteps = 10;
@@ -92,43 +92,44 @@ TEST(CanStopAfterTest, BrakingDistanceFromFullSpeedIsAQuarterMetre) {
   // From 0.5 m/s at 0.5 m/s², braking takes 0.25 m, plus 0.025 m for the
   // period the command holds: a post whose keep-out edge (disc + clearance)
   // lies 0.30 m ahead is safe, one at 0.24 m is not.
-  const double keep = kRadius + 0.03;
-  EXPECT_TRUE(CanStopAfter({0.5, 0.0}, Base(0.5, 0.0), {{keep + 0.30, 0.0}}, kRadius, 0.03));
-  EXPECT_FALSE(CanStopAfter({0.5, 0.0}, Base(0.5, 0.0), {{keep + 0.24, 0.0}}, kRadius, 0.03));
+  const double keep = kRobotRadiusM + 0.03;
+  EXPECT_TRUE(CanStopAfter({0.5, 0.0}, Base(0.5, 0.0), {{keep + 0.30, 0.0}}, kRobotRadiusM, 0.03));
+  EXPECT_FALSE(CanStopAfter({0.5, 0.0}, Base(0.5, 0.0), {{keep + 0.24, 0.0}}, kRobotRadiusM, 0.03));
   // Commanding a stop only saves the period's 0.025 m of cruising.
-  EXPECT_TRUE(CanStopAfter({0.0, 0.0}, Base(0.5, 0.0), {{keep + 0.26, 0.0}}, kRadius, 0.03));
-  EXPECT_FALSE(CanStopAfter({0.0, 0.0}, Base(0.5, 0.0), {{keep + 0.22, 0.0}}, kRadius, 0.03));
+  EXPECT_TRUE(CanStopAfter({0.0, 0.0}, Base(0.5, 0.0), {{keep + 0.26, 0.0}}, kRobotRadiusM, 0.03));
+  EXPECT_FALSE(CanStopAfter({0.0, 0.0}, Base(0.5, 0.0), {{keep + 0.22, 0.0}}, kRobotRadiusM, 0.03));
   // At rest, a forward command moves the robot by millimetres only.
-  EXPECT_TRUE(CanStopAfter({0.5, 0.0}, Base(0.0, 0.0), {{keep + 0.01, 0.0}}, kRadius, 0.03));
+  EXPECT_TRUE(CanStopAfter({0.5, 0.0}, Base(0.0, 0.0), {{keep + 0.01, 0.0}}, kRobotRadiusM, 0.03));
   // What it moves away from or passes wide of does not count.
-  EXPECT_TRUE(CanStopAfter({0.5, 0.0}, Base(0.5, 0.0), {{-0.25, 0.0}, {0.3, 0.5}}, kRadius, 0.03));
+  EXPECT_TRUE(
+      CanStopAfter({0.5, 0.0}, Base(0.5, 0.0), {{-0.25, 0.0}, {0.3, 0.5}}, kRobotRadiusM, 0.03));
 }
 
 TEST(CanStopAfterTest, TheTurnTheBaseIsStillMakingCounts) {
   // Turning left at 1 rad/s with 0.5 m/s the robot swings toward a post on
   // the left that the straight arc it is commanded passes wide of.
   const std::vector<Eigen::Vector2d> left_post = {{0.28, 0.245}};
-  EXPECT_TRUE(CanStopAfter({0.5, 0.0}, Base(0.5, 0.0), left_post, kRadius, 0.03));
-  EXPECT_FALSE(CanStopAfter({0.5, 0.0}, Base(0.5, 1.0), left_post, kRadius, 0.03));
+  EXPECT_TRUE(CanStopAfter({0.5, 0.0}, Base(0.5, 0.0), left_post, kRobotRadiusM, 0.03));
+  EXPECT_FALSE(CanStopAfter({0.5, 0.0}, Base(0.5, 1.0), left_post, kRobotRadiusM, 0.03));
 }
 
 TEST(CanStopAfterTest, RejectsImpossibleBases) {
   BaseMotion no_brakes = Base(0.5, 0.0);
   no_brakes.max_linear_accel_mps2 = 0.0;
-  EXPECT_THROW(CanStopAfter({0.5, 0.0}, no_brakes, {{1.0, 0.0}}, kRadius, 0.03),
+  EXPECT_THROW(CanStopAfter({0.5, 0.0}, no_brakes, {{1.0, 0.0}}, kRobotRadiusM, 0.03),
                std::invalid_argument);
   BaseMotion nan_speed = Base(std::nan(""), 0.0);
-  EXPECT_THROW(CanStopAfter({0.5, 0.0}, nan_speed, {{1.0, 0.0}}, kRadius, 0.03),
+  EXPECT_THROW(CanStopAfter({0.5, 0.0}, nan_speed, {{1.0, 0.0}}, kRobotRadiusM, 0.03),
                std::invalid_argument);
 }
 
 TEST(CollisionGuardMotionTest, WithoutABaseOrWhenOffTheCommandedArcGuardIsUnchanged) {
   const std::vector<Eigen::Vector2d> post = {{0.6, 0.05}};
   const BaseMotion base = Base(0.5, 0.0);
-  const GuardedCommand arc = GuardCommand({0.5, 0.3}, post, kRadius, CollisionGuardOptions{});
+  const GuardedCommand arc = GuardCommand({0.5, 0.3}, post, kRobotRadiusM, CollisionGuardOptions{});
   for (const GuardedCommand& g :
-       {GuardCommand({0.5, 0.3}, post, kRadius, CollisionGuardOptions{}, 1.0, &base),
-        GuardCommand({0.5, 0.3}, post, kRadius, Predicting(), 1.0, nullptr)}) {
+       {GuardCommand({0.5, 0.3}, post, kRobotRadiusM, CollisionGuardOptions{}, 1.0, &base),
+        GuardCommand({0.5, 0.3}, post, kRobotRadiusM, Predicting(), 1.0, nullptr)}) {
     EXPECT_EQ(g.command.linear_mps, arc.command.linear_mps);
     EXPECT_EQ(g.command.angular_radps, arc.command.angular_radps);
     EXPECT_EQ(g.stopped, arc.stopped);
@@ -138,7 +139,7 @@ TEST(CollisionGuardMotionTest, WithoutABaseOrWhenOffTheCommandedArcGuardIsUnchan
 TEST(CollisionGuardMotionTest, TurningOnTheSpotStaysAllowedAtRest) {
   const std::vector<Eigen::Vector2d> close = {{0.22, 0.0}, {0.0, 0.22}};
   const BaseMotion rest = Base(0.0, 0.0);
-  const GuardedCommand g = GuardCommand({0.0, 1.0}, close, kRadius, Predicting(), 1.0, &rest);
+  const GuardedCommand g = GuardCommand({0.0, 1.0}, close, kRobotRadiusM, Predicting(), 1.0, &rest);
   EXPECT_FALSE(g.stopped);
   EXPECT_EQ(g.command.angular_radps, 1.0);
 }
@@ -148,7 +149,7 @@ TEST(CollisionGuardMotionTest, TurningOnTheSpotStaysAllowedAtRest) {
 std::vector<Eigen::Vector2d> ConvergingWall(double gap_m, double angle_deg) {
   const double angle_rad = angle_deg * std::numbers::pi / 180.0;
   const Eigen::Vector2d along(std::cos(angle_rad), std::sin(angle_rad));
-  const Eigen::Vector2d through(0.0, -(kRadius + gap_m) / std::cos(angle_rad));
+  const Eigen::Vector2d through(0.0, -(kRobotRadiusM + gap_m) / std::cos(angle_rad));
   std::vector<Eigen::Vector2d> wall;
   for (double t = -1.0; t <= 3.0; t += 0.01) wall.push_back(through + t * along);
   return wall;
@@ -161,12 +162,12 @@ std::vector<Eigen::Vector2d> ConvergingWall(double gap_m, double angle_deg) {
 // base's turn rate lags, and when no arc is left braking comes too late.
 TEST(CollisionGuardMotionTest, BrakesOrTurnsAwayInTimeWhereTheCommandedArcGuardTouchesAWall) {
   const std::vector<Eigen::Vector2d> wall = ConvergingWall(0.20, 40.0);
-  ASSERT_TRUE(CanStopAfter({0.0, 0.0}, Base(0.49, 0.0), wall, kRadius, 0.03));
+  ASSERT_TRUE(CanStopAfter({0.0, 0.0}, Base(0.49, 0.0), wall, kRobotRadiusM, 0.03));
   const std::vector<VelocityCommand> straight_on = {{0.49, 0.0}};
   EXPECT_LT(ClosestApproachOfABase(straight_on, wall, 0.49, 0.0, CollisionGuardOptions{}, 3.0),
-            kRadius);
+            kRobotRadiusM);
   EXPECT_GE(ClosestApproachOfABase(straight_on, wall, 0.49, 0.0, Predicting(), 3.0),
-            kRadius + 0.03);
+            kRobotRadiusM + 0.03);
 }
 
 // From a random velocity where braking at once would still stop the robot
@@ -177,10 +178,10 @@ void CheckNeverTouches(const std::vector<Eigen::Vector2d>& obstacles,
                        const std::vector<VelocityCommand>& commands) {
   const double v0 = *rc::gen::inRange(0, 51) * 0.01;
   const double w0 = *rc::gen::inRange(-100, 101) * 0.01;
-  RC_PRE(CanStopAfter({0.0, 0.0}, Base(v0, w0), obstacles, kRadius, 0.03));
+  RC_PRE(CanStopAfter({0.0, 0.0}, Base(v0, w0), obstacles, kRobotRadiusM, 0.03));
   CollisionGuardOptions o = Predicting();
   o.steer_max_curvature_per_m = *rc::gen::element(0.0, 2.0, 4.0);
-  RC_ASSERT(ClosestApproachOfABase(commands, obstacles, v0, w0, o, 3.0) >= kRadius);
+  RC_ASSERT(ClosestApproachOfABase(commands, obstacles, v0, w0, o, 3.0) >= kRobotRadiusM);
 }
 
 // Walls at any angle and distance, a base already moving, and a follower

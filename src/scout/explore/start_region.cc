@@ -10,8 +10,8 @@
 namespace scout::explore {
 namespace {
 
-constexpr uint8_t kNoParent = 255;
-constexpr float kInf = std::numeric_limits<float>::infinity();
+constexpr uint8_t kNoEscapeParent = 255;
+constexpr float kUnreachedM = std::numeric_limits<float>::infinity();
 
 }  // namespace
 
@@ -51,7 +51,7 @@ void StartRegion::Escape(const PlanningMap& map) {
     }
   }
   const auto clearance = [&](const grid::CellIndex& c) {
-    float best = kInf;
+    float best = kUnreachedM;
     for (const auto& [off, d] : disc) {
       const grid::CellIndex n{c.x + off.x, c.y + off.y};
       if (d < best && limits_.Contains(n) &&
@@ -84,8 +84,8 @@ void StartRegion::Escape(const PlanningMap& map) {
     return k == 1;
   };
 
-  parent_.assign(ok.size(), kNoParent);
-  std::vector<float> dist(ok.size(), kInf);
+  parent_.assign(ok.size(), kNoEscapeParent);
+  std::vector<float> dist(ok.size(), kUnreachedM);
   using Entry = std::pair<float, int64_t>;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
   const int64_t root = WindowIndex(root_);
@@ -136,7 +136,7 @@ std::vector<Eigen::Vector2d> StartRegion::PathTo(const grid::CellIndex& cell) co
     path.push_back(limits_.CellCenter(c));
     if (c == root_) break;
     const uint8_t k = parent_[WindowIndex(c)];
-    if (k == kNoParent) throw std::invalid_argument("StartRegion::PathTo: not a seed");
+    if (k == kNoEscapeParent) throw std::invalid_argument("StartRegion::PathTo: not a seed");
     c = {c.x - kNeighbourOffsets[k][0], c.y - kNeighbourOffsets[k][1]};
   }
   path.push_back(robot_);

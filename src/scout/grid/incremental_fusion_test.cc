@@ -16,7 +16,7 @@ namespace {
 
 using GridPtr = std::shared_ptr<const ProbabilityGrid>;
 
-GridPtr Uniform(int n, float p) {
+GridPtr SharedUniform(int n, float p) {
   auto g = std::make_shared<ProbabilityGrid>(MapLimits(0.1, {0, 0}, n, n));
   for (int y = 0; y < n; ++y) {
     for (int x = 0; x < n; ++x) g->SetProbability({x, y}, p);
@@ -39,9 +39,10 @@ bool SameMap(const OccupancyMap& a, const OccupancyMap& b) {
 
 TEST(IncrementalSubmapFusion, ReusesFinishedSubmapsUntilAnOptimisationMovesThem) {
   IncrementalSubmapFusion fusion(0.1);
-  std::vector<FusionInput> submaps = {{0, Uniform(10, 0.2f), geometry::Rigid2d(), true},
-                                      {1, Uniform(10, 0.6f), geometry::Rigid2d(0.5, 0, 0), true},
-                                      {2, Uniform(10, 0.45f), geometry::Rigid2d(1.0, 0, 0), false}};
+  std::vector<FusionInput> submaps = {
+      {0, SharedUniform(10, 0.2f), geometry::Rigid2d(), true},
+      {1, SharedUniform(10, 0.6f), geometry::Rigid2d(0.5, 0, 0), true},
+      {2, SharedUniform(10, 0.45f), geometry::Rigid2d(1.0, 0, 0), false}};
   const OccupancyMap* map = &fusion.Update(submaps);
   ASSERT_TRUE(SameMap(*map, Reference(submaps, 0.1)));
   ASSERT_EQ(map->limits.width(), 20);
@@ -53,7 +54,7 @@ TEST(IncrementalSubmapFusion, ReusesFinishedSubmapsUntilAnOptimisationMovesThem)
   EXPECT_EQ(fusion.statistics().active_additions, 1);
 
   // The active submap got a new snapshot: only it is added again.
-  submaps[2].grid = Uniform(10, 0.9f);
+  submaps[2].grid = SharedUniform(10, 0.9f);
   map = &fusion.Update(submaps);
   ASSERT_TRUE(SameMap(*map, Reference(submaps, 0.1)));
   EXPECT_EQ(map->at({17, 5}), CellState::kOccupied);
@@ -62,7 +63,7 @@ TEST(IncrementalSubmapFusion, ReusesFinishedSubmapsUntilAnOptimisationMovesThem)
 
   // It is finished and a new one grows the map towards -x (a new origin).
   submaps[2].finished = true;
-  submaps.push_back({3, Uniform(10, 0.3f), geometry::Rigid2d(-1.0, 0, 0), false});
+  submaps.push_back({3, SharedUniform(10, 0.3f), geometry::Rigid2d(-1.0, 0, 0), false});
   map = &fusion.Update(submaps);
   ASSERT_TRUE(SameMap(*map, Reference(submaps, 0.1)));
   ASSERT_EQ(map->limits.width(), 30);
@@ -86,7 +87,7 @@ TEST(IncrementalSubmapFusion, NoSubmapsGiveAnEmptyMapAndBadInputThrows) {
   EXPECT_THROW(IncrementalSubmapFusion(0.0), std::invalid_argument);
 }
 
-GridPtr RandomGrid() {
+GridPtr SharedRandomGrid() {
   const double resolution = *rc::gen::element(0.05, 0.1);
   const int width = *rc::gen::inRange(1, 30);
   const int height = *rc::gen::inRange(1, 30);
@@ -117,11 +118,11 @@ RC_GTEST_PROP(IncrementalSubmapFusion, EveryUpdateEqualsFuseSubmaps, ()) {
     }
     switch (*rc::gen::inRange(0, 5)) {
       case 0:
-        submaps.push_back(
-            {static_cast<int>(submaps.size()), RandomGrid(), testing::RandomSubmapPose(), false});
+        submaps.push_back({static_cast<int>(submaps.size()), SharedRandomGrid(),
+                           testing::RandomSubmapPose(), false});
         break;
       case 1:
-        if (!active.empty()) submaps[*rc::gen::elementOf(active)].grid = RandomGrid();
+        if (!active.empty()) submaps[*rc::gen::elementOf(active)].grid = SharedRandomGrid();
         break;
       case 2:
         if (!active.empty()) submaps[*rc::gen::elementOf(active)].finished = true;

@@ -54,7 +54,7 @@ bool AnyWarningContains(const Dataset& dataset, const std::string& text) {
   return false;
 }
 
-std::string ThrownMessage(const fs::path& path) {
+std::string ThrownLogMessage(const fs::path& path) {
   try {
     ReadCarmenLog(path);
   } catch (const InputError& e) {
@@ -194,9 +194,9 @@ TEST(CarmenLogReader, ReversedTimesAreAnErrorNotASingleScan) {
   std::string log;
   for (int i = 0; i < 6; ++i) log += Flaser(2, 1.0, 0, 0, 0, 10.0 - i);
   const fs::path path = dir.Write("reversed.log", log);
-  EXPECT_NE(ThrownMessage(path).find("reversed.log: only 1 of 6 scans are in time order"),
+  EXPECT_NE(ThrownLogMessage(path).find("reversed.log: only 1 of 6 scans are in time order"),
             std::string::npos)
-      << ThrownMessage(path);
+      << ThrownLogMessage(path);
 }
 
 TEST(CarmenLogReader, RobotLaserWithoutAResolutionIsMalformedAndAFieldOfViewMismatchIsNamed) {
@@ -263,9 +263,9 @@ TEST(CarmenLogReader, APipeOrDirectoryIsRefusedByName) {
   const fs::path fifo = dir.path() / "stream.log";
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
   // Reading a pipe would lose the bytes the format detection reads.
-  std::string message = ThrownMessage(fifo);
+  std::string message = ThrownLogMessage(fifo);
   EXPECT_NE(message.find(fifo.string() + ": is not a regular file"), std::string::npos) << message;
-  message = ThrownMessage(dir.path());
+  message = ThrownLogMessage(dir.path());
   EXPECT_NE(message.find(": is a directory"), std::string::npos) << message;
 }
 
@@ -399,7 +399,7 @@ TEST(CarmenLogReader, GzipCutInItsHeaderIsAnErrorNamingTheFile) {
   const fs::path cut = dir.path() / "header_only.log.gz";
   fs::copy_file(whole, cut);
   fs::resize_file(cut, 6);
-  const std::string message = ThrownMessage(cut);
+  const std::string message = ThrownLogMessage(cut);
   EXPECT_NE(message.find(cut.string()), std::string::npos) << message;
   EXPECT_NE(message.find("gzip"), std::string::npos) << message;
 }
@@ -409,7 +409,7 @@ TEST(CarmenLogReader, CorruptGzipDataIsAnErrorNamingTheFile) {
   const fs::path path =
       dir.Write("corrupt.log.gz", std::string("\x1f\x8b\x08\x00\x00\x00\x00\x00\x00\x03", 10) +
                                       std::string(200, '\xff'));
-  const std::string message = ThrownMessage(path);
+  const std::string message = ThrownLogMessage(path);
   EXPECT_NE(message.find(path.string() + ": corrupt or truncated gzip"), std::string::npos)
       << message;
 }
@@ -417,10 +417,10 @@ TEST(CarmenLogReader, CorruptGzipDataIsAnErrorNamingTheFile) {
 TEST(CarmenLogReader, LogWithoutScansIsAnError) {
   const TestTempDirectory dir;
   const fs::path path = dir.Write("odom_only.log", Odom(0, 0, 0, 1.0) + Odom(1, 0, 0, 2.0));
-  const std::string message = ThrownMessage(path);
+  const std::string message = ThrownLogMessage(path);
   EXPECT_NE(message.find(path.string() + ": no usable laser scan"), std::string::npos) << message;
   EXPECT_NE(message.find("expected FLASER or ROBOTLASER1"), std::string::npos) << message;
-  EXPECT_NE(ThrownMessage(dir.path() / "missing.log").find("missing.log: cannot open"),
+  EXPECT_NE(ThrownLogMessage(dir.path() / "missing.log").find("missing.log: cannot open"),
             std::string::npos);
 }
 

@@ -22,7 +22,7 @@ using grid::TestTempDirectory;
 
 const fs::path kDataDir = SCOUT_SHARED_DATA_DIR;
 
-std::string ThrownMessage(const fs::path& path) {
+std::string ThrownDatasetMessage(const fs::path& path) {
   try {
     LoadDataset(path);
   } catch (const InputError& e) {
@@ -78,11 +78,12 @@ TEST(Dataset, DetectsCarmenLogsByContentAndRejectsOtherFiles) {
   EXPECT_NE(from_gzip.warnings[0].find("options for ROS bags; ignored"), std::string::npos);
 
   const fs::path old_bag = dir.Write("old.bag", "#ROSBAG V1.2\n...");
-  EXPECT_NE(ThrownMessage(old_bag).find(old_bag.string() + ": ROS bag of format 'ROSBAG V1.2'"),
-            std::string::npos);
-  EXPECT_NE(ThrownMessage(dir.path()).find(": is a directory"), std::string::npos);
+  EXPECT_NE(
+      ThrownDatasetMessage(old_bag).find(old_bag.string() + ": ROS bag of format 'ROSBAG V1.2'"),
+      std::string::npos);
+  EXPECT_NE(ThrownDatasetMessage(dir.path()).find(": is a directory"), std::string::npos);
   const fs::path empty = dir.Write("empty.log", "");
-  EXPECT_NE(ThrownMessage(empty).find(empty.string() + ": no usable laser scan"),
+  EXPECT_NE(ThrownDatasetMessage(empty).find(empty.string() + ": no usable laser scan"),
             std::string::npos);
 }
 

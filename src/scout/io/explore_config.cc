@@ -9,7 +9,7 @@
 namespace scout::io {
 namespace {
 
-constexpr double kRadPerDeg = std::numbers::pi / 180.0;
+constexpr double kRadiansPerDegree = std::numbers::pi / 180.0;
 
 void ReadGoals(YamlSection s, explore::GoalManagerOptions* o) {
   s.ReadPositive("progress_timeout_s", &o->progress_timeout_s);
@@ -64,10 +64,10 @@ void ReadFollower(YamlSection s, explore::PathFollowerOptions* o) {
   s.ReadPositiveAtMost("lookahead_m", &o->lookahead_m, 10.0);
   s.ReadPositive("max_linear_speed_mps", &o->max_linear_speed_mps);
   s.ReadPositive("max_angular_speed_radps", &o->max_angular_speed_radps);
-  double heading_deg = o->rotate_in_place_heading_rad / kRadPerDeg;
+  double heading_deg = o->rotate_in_place_heading_rad / kRadiansPerDegree;
   s.ReadInRange("rotate_in_place_heading_deg", &heading_deg, 0.0, 180.0,
                 YamlSection::Bound::kInclusive, YamlSection::Bound::kInclusive);
-  o->rotate_in_place_heading_rad = heading_deg * kRadPerDeg;
+  o->rotate_in_place_heading_rad = heading_deg * kRadiansPerDegree;
   s.ReadPositive("rotate_gain_per_s", &o->rotate_gain_per_s);
   s.ReadPositiveAtMost("goal_tolerance_m", &o->goal_tolerance_m, 5.0);
   s.ReadNonNegativeAtMost("slow_down_distance_m", &o->slow_down_distance_m, 10.0);
@@ -124,9 +124,9 @@ void ReadExploreOptions(YamlSection s, exploration::ExploreOptions* o) {
   s.ReadNonNegative("complete_max_reachable_frontier_m", &o->complete_max_reachable_frontier_m);
   s.ReadPositive("map_update_interval_s", &o->map_update_interval_s);
   s.ReadPositive("coverage_interval_s", &o->coverage_interval_s);
-  double turn_deg = o->initial_turn_rad / kRadPerDeg;
+  double turn_deg = o->initial_turn_rad / kRadiansPerDegree;
   s.ReadNonNegativeAtMost("initial_turn_deg", &turn_deg, 3600.0);
-  o->initial_turn_rad = turn_deg * kRadPerDeg;
+  o->initial_turn_rad = turn_deg * kRadiansPerDegree;
   s.ReadBool("evaluate_frontier", &o->evaluate_frontier);
   s.ReadBool("synchronous_slam", &o->synchronous_slam);
   s.ReadInt("solve_delay_nodes", &o->solve_delay_nodes, 0);
@@ -188,9 +188,9 @@ void ReadRobotOptions(YamlSection s, sim::SimulatedRobotOptions* o) {
   s.ReadPositive("collision_substep_cells", &o->robot.collision_substep_cells);
   s.ReadPositive("scan_rate_hz", &o->scan_rate_hz);
   s.ReadPositive("odometry_rate_hz", &o->odometry_rate_hz);
-  double heading_deg = o->start_heading_rad / kRadPerDeg;
+  double heading_deg = o->start_heading_rad / kRadiansPerDegree;
   s.ReadDouble("start_heading_deg", &heading_deg);
-  o->start_heading_rad = heading_deg * kRadPerDeg;
+  o->start_heading_rad = heading_deg * kRadiansPerDegree;
   ReadLidarOptions(s.Section("lidar"), &o->lidar);
   {
     YamlSection d = s.Section("odometry");

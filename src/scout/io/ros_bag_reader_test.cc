@@ -81,7 +81,7 @@ bool AnyWarningContains(const Dataset& dataset, const std::string& text) {
   return false;
 }
 
-std::string ThrownMessage(const fs::path& path, const DatasetOptions& options = {}) {
+std::string ThrownBagMessage(const fs::path& path, const DatasetOptions& options = {}) {
   try {
     ReadRosBag(path, options);
   } catch (const InputError& e) {
@@ -157,7 +157,7 @@ TEST(RosBagReader, UnknownTopicIsAnErrorListingTheTopicsOfThatType) {
   const fs::path path = WriteTestBag(dir.path() / "robot.bag");
   DatasetOptions options;
   options.scan_topic = "/goal";  // exists, but is not a LaserScan
-  const std::string message = ThrownMessage(path, options);
+  const std::string message = ThrownBagMessage(path, options);
   EXPECT_NE(message.find(path.string() + ": topic '/goal' is not a sensor_msgs/LaserScan"),
             std::string::npos)
       << message;
@@ -165,7 +165,8 @@ TEST(RosBagReader, UnknownTopicIsAnErrorListingTheTopicsOfThatType) {
       << message;
   options = {};
   options.odometry_topic = "/odom";
-  EXPECT_NE(ThrownMessage(path, options).find("expected one of: /wheel_odom"), std::string::npos);
+  EXPECT_NE(ThrownBagMessage(path, options).find("expected one of: /wheel_odom"),
+            std::string::npos);
 }
 
 TEST(RosBagReader, BagWithoutScansIsAnErrorAndWithoutOdometryAWarning) {
@@ -175,7 +176,7 @@ TEST(RosBagReader, BagWithoutScansIsAnErrorAndWithoutOdometryAWarning) {
     rosbag::Bag bag(no_scans.string(), rosbag::bagmode::Write);
     bag.write("/odom", ros::Time(1.0), Odom(1.0, 0, 0, 0));
   }
-  const std::string message = ThrownMessage(no_scans);
+  const std::string message = ThrownBagMessage(no_scans);
   EXPECT_NE(message.find(no_scans.string() + ": no sensor_msgs/LaserScan topic"), std::string::npos)
       << message;
   EXPECT_NE(message.find("/odom (nav_msgs/Odometry, 1 messages)"), std::string::npos) << message;
@@ -246,9 +247,9 @@ TEST(RosBagReader, ScansMostlyOutOfTimeOrderAreAnError) {
     rosbag::Bag bag(path.string(), rosbag::bagmode::Write);
     for (int i = 0; i < 5; ++i) bag.write("/scan", ros::Time(1.0 + i), Scan(10.0 - i, 3));
   }
-  EXPECT_NE(ThrownMessage(path).find("reversed.bag: only 1 of 5 scans are in time order"),
+  EXPECT_NE(ThrownBagMessage(path).find("reversed.bag: only 1 of 5 scans are in time order"),
             std::string::npos)
-      << ThrownMessage(path);
+      << ThrownBagMessage(path);
 }
 
 TEST(RosBagReader, UnusableAnglesOdometryAndCorruptMessagesAreSkippedWithWarnings) {
@@ -341,11 +342,11 @@ TEST(RosBagReader, TruncatedOrCorruptBagIsAnErrorNamingTheFile) {
   const fs::path cut = dir.path() / "cut.bag";
   fs::copy_file(whole, cut);
   fs::resize_file(cut, fs::file_size(whole) / 2);
-  std::string message = ThrownMessage(cut);
+  std::string message = ThrownBagMessage(cut);
   EXPECT_NE(message.find(cut.string() + ": not a readable ROS 1 bag"), std::string::npos)
       << message;
   const fs::path garbage = dir.Write("garbage.bag", "#ROSBAG V2.0\nthis is not a bag");
-  message = ThrownMessage(garbage);
+  message = ThrownBagMessage(garbage);
   EXPECT_NE(message.find(garbage.string() + ": not a readable ROS 1 bag"), std::string::npos)
       << message;
 }
@@ -366,7 +367,7 @@ TEST(RosBagReader, GzipBagReadsLikeThePlainOneAndLeavesNoTemporaryFile) {
   const fs::path cut_gz = dir.path() / "cut.bag.gz";
   fs::copy_file(gz, cut_gz);
   fs::resize_file(cut_gz, fs::file_size(gz) / 2);
-  EXPECT_NE(ThrownMessage(cut_gz).find(cut_gz.string() + ": corrupt or truncated gzip"),
+  EXPECT_NE(ThrownBagMessage(cut_gz).find(cut_gz.string() + ": corrupt or truncated gzip"),
             std::string::npos);
   EXPECT_TRUE(tmp.IsEmpty());
   const fs::path cut_bag = dir.path() / "cut.bag";
@@ -374,7 +375,7 @@ TEST(RosBagReader, GzipBagReadsLikeThePlainOneAndLeavesNoTemporaryFile) {
   fs::resize_file(cut_bag, fs::file_size(plain) / 2);
   const fs::path gz_of_cut = dir.path() / "gz_of_cut.bag.gz";
   GzipFile(cut_bag, gz_of_cut);
-  EXPECT_NE(ThrownMessage(gz_of_cut).find(gz_of_cut.string() + ": not a readable ROS 1 bag"),
+  EXPECT_NE(ThrownBagMessage(gz_of_cut).find(gz_of_cut.string() + ": not a readable ROS 1 bag"),
             std::string::npos);
   EXPECT_TRUE(tmp.IsEmpty());
 }

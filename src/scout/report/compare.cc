@@ -14,7 +14,7 @@
 namespace scout::report {
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kNoValue = std::numeric_limits<double>::quiet_NaN();
 
 // Strategies of all runs, in order of first appearance; "full" is the
 // reference every other strategy is scored against, so it is left out.
@@ -52,7 +52,7 @@ std::string TimeToCoverage(const RunData& run, double fraction) {
 }
 
 // The path driven when coverage first reached 'fraction' (issue 4's measure).
-std::string PathToCoverage(const RunData& run, double fraction) {
+std::string PathToCoverageText(const RunData& run, double fraction) {
   const CoverageSample* c = FirstReaching(run.coverage, fraction);
   return c ? FormatNumber("%.1f", c->path_length_m) : "–";
 }
@@ -77,7 +77,7 @@ std::vector<Figure> ComparisonFigures(const std::vector<RunData>& runs) {
       BarSeries series{runs[r].name, {}};
       for (const std::string& s : strategies) {
         const StrategyStats* found = Find(stats[r], s);
-        series.values.push_back(found ? value(*found) : kNaN);
+        series.values.push_back(found ? value(*found) : kNoValue);
       }
       chart.series.push_back(std::move(series));
     }
@@ -184,8 +184,8 @@ std::string RenderComparison(const std::vector<RunData>& runs, const std::vector
     });
     row("time to 90 % coverage (s)", [&](size_t i) { return TimeToCoverage(runs[i], 0.9); });
     row("time to 99 % coverage (s)", [&](size_t i) { return TimeToCoverage(runs[i], 0.99); });
-    row("path to 95 % coverage (m)", [&](size_t i) { return PathToCoverage(runs[i], 0.95); });
-    row("path to 99 % coverage (m)", [&](size_t i) { return PathToCoverage(runs[i], 0.99); });
+    row("path to 95 % coverage (m)", [&](size_t i) { return PathToCoverageText(runs[i], 0.95); });
+    row("path to 99 % coverage (m)", [&](size_t i) { return PathToCoverageText(runs[i], 0.99); });
   }
   std::ostringstream body;
   body << "<h2 id=\"runs\">Runs side by side</h2>\n" << HtmlTable(header, rows);

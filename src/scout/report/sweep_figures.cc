@@ -14,7 +14,7 @@ namespace {
 
 using Json = nlohmann::json;
 
-double NumberOr(const Json& j, const char* key, double fallback) {
+double JsonNumberOr(const Json& j, const char* key, double fallback) {
   return j.is_object() && j.contains(key) && j[key].is_number() ? j[key].get<double>() : fallback;
 }
 
@@ -26,10 +26,10 @@ const Json* Strategies(const RunData& run) {
 
 // Optimisation rounds of 'strategy' in 'run' (frontier.csv rows, else the
 // summary's count).
-double Rounds(const RunData& run, const std::string& strategy) {
+double RoundsOf(const RunData& run, const std::string& strategy) {
   int n = 0;
   for (const FrontierRound& r : run.rounds) n += r.strategy == strategy ? 1 : 0;
-  return n > 0 ? n : NumberOr(run.summary, "optimizations", 0.0);
+  return n > 0 ? n : JsonNumberOr(run.summary, "optimizations", 0.0);
 }
 
 // One series per strategy: (x of the run, value(strategy json, run)), sorted by x.
@@ -89,20 +89,20 @@ std::vector<Figure> SweepFigures(const std::vector<RunData>& runs) {
   constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
   std::vector<Figure> figures;
   const auto epsilon =
-      SortedBy(runs, [](const RunData& r) { return NumberOr(r.summary, "epsilon_m", kNaN); });
+      SortedBy(runs, [](const RunData& r) { return JsonNumberOr(r.summary, "epsilon_m", kNaN); });
   if (DistinctX(epsilon) >= 2) {
     const std::vector<std::string> thresholded = {"bfs", "direct"};
     LineChart points{
         "Points re-queried over all optimisation rounds against ε", "ε (m)", "points re-queried",
         PerStrategy(epsilon, thresholded, [](const Json& s, const RunData&, const std::string&) {
-          return NumberOr(s, "queried_points", kNaN);
+          return JsonNumberOr(s, "queried_points", kNaN);
         })};
     figures.push_back(
         {"epsilon_points", "ε sweep: points re-queried (bfs, direct)", RenderLineChart(points)});
     LineChart accuracy{
         "Accuracy against full recomputation against ε", "ε (m)", "accuracy",
         PerStrategy(epsilon, thresholded, [](const Json& s, const RunData&, const std::string&) {
-          return NumberOr(s, "accuracy", kNaN);
+          return JsonNumberOr(s, "accuracy", kNaN);
         })};
     figures.push_back(
         {"epsilon_accuracy", "ε sweep: accuracy (bfs, direct)", RenderLineChart(accuracy)});
@@ -118,8 +118,8 @@ std::vector<Figure> SweepFigures(const std::vector<RunData>& runs) {
     const std::vector<std::string> names = StrategyNames(runs);
     const auto per_round = [](const char* key) {
       return [key](const Json& s, const RunData& run, const std::string& name) {
-        const double rounds = Rounds(run, name);
-        return rounds > 0 ? NumberOr(s, key, kNaN) / rounds : kNaN;
+        const double rounds = RoundsOf(run, name);
+        return rounds > 0 ? JsonNumberOr(s, key, kNaN) / rounds : kNaN;
       };
     };
     LineChart points{"Points re-queried per optimisation round against world size",

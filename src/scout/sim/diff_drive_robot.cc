@@ -11,7 +11,8 @@
 namespace scout::sim {
 namespace {
 
-void Require(bool ok, const std::string& key, double value, const std::string& expected) {
+void RequireRobotOption(bool ok, const std::string& key, double value,
+                        const std::string& expected) {
   if (!ok) {
     std::ostringstream message;
     message << "robot." << key << " = " << value << ": expected " << expected;
@@ -36,16 +37,18 @@ double Ramp(double current, double command, double max_change, double max_abs) {
 
 void CheckDiffDriveOptions(const DiffDriveOptions& o) {
   // Written as !(x > 0) so NaN fails too.
-  Require(o.radius_m > 0.0, "radius_m", o.radius_m, "> 0");
-  Require(o.max_linear_speed_mps > 0.0, "max_linear_speed_mps", o.max_linear_speed_mps, "> 0");
-  Require(o.max_angular_speed_radps > 0.0, "max_angular_speed_radps", o.max_angular_speed_radps,
-          "> 0");
-  Require(o.max_linear_accel_mps2 > 0.0, "max_linear_accel_mps2", o.max_linear_accel_mps2, "> 0");
-  Require(o.max_angular_accel_radps2 > 0.0, "max_angular_accel_radps2", o.max_angular_accel_radps2,
-          "> 0");
+  RequireRobotOption(o.radius_m > 0.0, "radius_m", o.radius_m, "> 0");
+  RequireRobotOption(o.max_linear_speed_mps > 0.0, "max_linear_speed_mps", o.max_linear_speed_mps,
+                     "> 0");
+  RequireRobotOption(o.max_angular_speed_radps > 0.0, "max_angular_speed_radps",
+                     o.max_angular_speed_radps, "> 0");
+  RequireRobotOption(o.max_linear_accel_mps2 > 0.0, "max_linear_accel_mps2",
+                     o.max_linear_accel_mps2, "> 0");
+  RequireRobotOption(o.max_angular_accel_radps2 > 0.0, "max_angular_accel_radps2",
+                     o.max_angular_accel_radps2, "> 0");
   // Finer than a hundredth of a cell only costs time (1e-9 never finished a step).
-  Require(o.collision_substep_cells >= 0.01 && o.collision_substep_cells <= 1.0,
-          "collision_substep_cells", o.collision_substep_cells, "in [0.01, 1]");
+  RequireRobotOption(o.collision_substep_cells >= 0.01 && o.collision_substep_cells <= 1.0,
+                     "collision_substep_cells", o.collision_substep_cells, "in [0.01, 1]");
 }
 
 geometry::Rigid2d IntegrateArc(const geometry::Rigid2d& pose, double v_mps, double omega_radps,

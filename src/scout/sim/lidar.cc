@@ -14,7 +14,8 @@
 namespace scout::sim {
 namespace {
 
-void Require(bool ok, const std::string& key, double value, const std::string& expected) {
+void RequireLidarOption(bool ok, const std::string& key, double value,
+                        const std::string& expected) {
   if (!ok) {
     throw InputError("lidar." + key + " = " + FormatNumber(value) + ": expected " + expected);
   }
@@ -23,17 +24,17 @@ void Require(bool ok, const std::string& key, double value, const std::string& e
 }  // namespace
 
 Lidar::Lidar(const LidarOptions& options) : options_(options) {
-  Require(options.range_max_m > 0.0, "range_max_m", options.range_max_m, "> 0");
-  Require(options.range_min_m >= 0.0 && options.range_min_m < options.range_max_m, "range_min_m",
-          options.range_min_m,
-          ">= 0 and < range_max_m (" + FormatNumber(options.range_max_m) + ")");
-  Require(options.fov_deg > 0.0 && options.fov_deg <= 360.0, "fov_deg", options.fov_deg,
-          "in (0, 360]");
-  Require(options.beams >= 1, "beams", options.beams, ">= 1");
-  Require(options.range_noise_stddev_m >= 0.0, "range_noise_stddev_m", options.range_noise_stddev_m,
-          ">= 0");
-  Require(options.dropout_probability >= 0.0 && options.dropout_probability <= 1.0,
-          "dropout_probability", options.dropout_probability, "in [0, 1]");
+  RequireLidarOption(options.range_max_m > 0.0, "range_max_m", options.range_max_m, "> 0");
+  RequireLidarOption(options.range_min_m >= 0.0 && options.range_min_m < options.range_max_m,
+                     "range_min_m", options.range_min_m,
+                     ">= 0 and < range_max_m (" + FormatNumber(options.range_max_m) + ")");
+  RequireLidarOption(options.fov_deg > 0.0 && options.fov_deg <= 360.0, "fov_deg", options.fov_deg,
+                     "in (0, 360]");
+  RequireLidarOption(options.beams >= 1, "beams", options.beams, ">= 1");
+  RequireLidarOption(options.range_noise_stddev_m >= 0.0, "range_noise_stddev_m",
+                     options.range_noise_stddev_m, ">= 0");
+  RequireLidarOption(options.dropout_probability >= 0.0 && options.dropout_probability <= 1.0,
+                     "dropout_probability", options.dropout_probability, "in [0, 1]");
   const double fov_rad = options.fov_deg * std::numbers::pi / 180.0;
   const bool full_circle = options.fov_deg >= 360.0;
   if (options.beams == 1) {

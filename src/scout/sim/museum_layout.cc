@@ -14,42 +14,48 @@
 namespace scout::sim {
 namespace {
 
-void Require(bool ok, const std::string& key, double value, const std::string& expected) {
+void RequireMuseumOption(bool ok, const std::string& key, double value,
+                         const std::string& expected) {
   RequireWorldOption(ok, "museum world", key, value, expected);
 }
 
 void Validate(const MuseumWorldOptions& o) {
-  Require(o.resolution_m > 0.0, "resolution_m", o.resolution_m, "> 0");
-  Require(o.wall_thickness_m >= o.resolution_m, "wall_thickness_m", o.wall_thickness_m,
-          ">= resolution_m");
-  Require(o.min_hall_size_m > 2.0 * o.wall_thickness_m, "min_hall_size_m", o.min_hall_size_m,
-          "> 2 * wall_thickness_m");
-  Require(o.max_hall_size_m >= o.min_hall_size_m, "max_hall_size_m", o.max_hall_size_m,
-          ">= min_hall_size_m");
+  RequireMuseumOption(o.resolution_m > 0.0, "resolution_m", o.resolution_m, "> 0");
+  RequireMuseumOption(o.wall_thickness_m >= o.resolution_m, "wall_thickness_m", o.wall_thickness_m,
+                      ">= resolution_m");
+  RequireMuseumOption(o.min_hall_size_m > 2.0 * o.wall_thickness_m, "min_hall_size_m",
+                      o.min_hall_size_m, "> 2 * wall_thickness_m");
+  RequireMuseumOption(o.max_hall_size_m >= o.min_hall_size_m, "max_hall_size_m", o.max_hall_size_m,
+                      ">= min_hall_size_m");
   const double min_side_m = o.min_hall_size_m + 2.0 * o.wall_thickness_m;
   const std::string at_least =
       ">= " + FormatNumber(min_side_m) + " (min_hall_size_m + 2 * wall_thickness_m)";
-  Require(o.width_m >= min_side_m, "width_m", o.width_m, at_least);
-  Require(o.height_m >= min_side_m, "height_m", o.height_m, at_least);
-  Require(o.corridor_width_m > 0.0, "corridor_width_m", o.corridor_width_m, "> 0");
-  Require(o.corridor_probability >= 0.0 && o.corridor_probability <= 1.0, "corridor_probability",
-          o.corridor_probability, "in [0, 1]");
-  Require(o.min_opening_width_m > 0.0, "min_opening_width_m", o.min_opening_width_m, "> 0");
-  Require(o.max_opening_width_m >= o.min_opening_width_m, "max_opening_width_m",
-          o.max_opening_width_m, ">= min_opening_width_m");
-  Require(o.max_openings_per_wall >= 1, "max_openings_per_wall", o.max_openings_per_wall, ">= 1");
-  Require(o.pillar_hall_probability >= 0.0 && o.pillar_hall_probability <= 1.0,
-          "pillar_hall_probability", o.pillar_hall_probability, "in [0, 1]");
-  Require(o.pillar_size_m > 0.0 && o.pillar_size_m < o.pillar_spacing_m, "pillar_size_m",
-          o.pillar_size_m, "in (0, pillar_spacing_m)");
-  Require(o.min_exhibits_per_hall >= 0, "min_exhibits_per_hall", o.min_exhibits_per_hall, ">= 0");
-  Require(o.max_exhibits_per_hall >= o.min_exhibits_per_hall, "max_exhibits_per_hall",
-          o.max_exhibits_per_hall, ">= min_exhibits_per_hall");
-  Require(o.min_exhibit_size_m > 0.0, "min_exhibit_size_m", o.min_exhibit_size_m, "> 0");
-  Require(o.max_exhibit_size_m >= o.min_exhibit_size_m, "max_exhibit_size_m", o.max_exhibit_size_m,
-          ">= min_exhibit_size_m");
-  Require(o.exhibit_clearance_m >= 0.0, "exhibit_clearance_m", o.exhibit_clearance_m, ">= 0");
-  Require(o.exhibit_attempts >= 1, "exhibit_attempts", o.exhibit_attempts, ">= 1");
+  RequireMuseumOption(o.width_m >= min_side_m, "width_m", o.width_m, at_least);
+  RequireMuseumOption(o.height_m >= min_side_m, "height_m", o.height_m, at_least);
+  RequireMuseumOption(o.corridor_width_m > 0.0, "corridor_width_m", o.corridor_width_m, "> 0");
+  RequireMuseumOption(o.corridor_probability >= 0.0 && o.corridor_probability <= 1.0,
+                      "corridor_probability", o.corridor_probability, "in [0, 1]");
+  RequireMuseumOption(o.min_opening_width_m > 0.0, "min_opening_width_m", o.min_opening_width_m,
+                      "> 0");
+  RequireMuseumOption(o.max_opening_width_m >= o.min_opening_width_m, "max_opening_width_m",
+                      o.max_opening_width_m, ">= min_opening_width_m");
+  RequireMuseumOption(o.max_openings_per_wall >= 1, "max_openings_per_wall",
+                      o.max_openings_per_wall, ">= 1");
+  RequireMuseumOption(o.pillar_hall_probability >= 0.0 && o.pillar_hall_probability <= 1.0,
+                      "pillar_hall_probability", o.pillar_hall_probability, "in [0, 1]");
+  RequireMuseumOption(o.pillar_size_m > 0.0 && o.pillar_size_m < o.pillar_spacing_m,
+                      "pillar_size_m", o.pillar_size_m, "in (0, pillar_spacing_m)");
+  RequireMuseumOption(o.min_exhibits_per_hall >= 0, "min_exhibits_per_hall",
+                      o.min_exhibits_per_hall, ">= 0");
+  RequireMuseumOption(o.max_exhibits_per_hall >= o.min_exhibits_per_hall, "max_exhibits_per_hall",
+                      o.max_exhibits_per_hall, ">= min_exhibits_per_hall");
+  RequireMuseumOption(o.min_exhibit_size_m > 0.0, "min_exhibit_size_m", o.min_exhibit_size_m,
+                      "> 0");
+  RequireMuseumOption(o.max_exhibit_size_m >= o.min_exhibit_size_m, "max_exhibit_size_m",
+                      o.max_exhibit_size_m, ">= min_exhibit_size_m");
+  RequireMuseumOption(o.exhibit_clearance_m >= 0.0, "exhibit_clearance_m", o.exhibit_clearance_m,
+                      ">= 0");
+  RequireMuseumOption(o.exhibit_attempts >= 1, "exhibit_attempts", o.exhibit_attempts, ">= 1");
 }
 
 // Cuts 1..max_openings_per_wall openings through the wall 'wall' (across)

@@ -8,7 +8,7 @@
 namespace scout::sim {
 namespace {
 
-constexpr double kInflationRadiusM = 0.40;
+constexpr double kMuseumInflationRadiusM = 0.40;
 
 TEST(MuseumWorld, IsAtLeast150MetresAcross) {
   const World world = GenerateMuseumWorld(1);
@@ -50,7 +50,7 @@ TEST(MuseumWorld, EveryHallIsReachableByTheInflatedRobot) {
   const std::vector<float> clearance = ComputeClearance(map);
   const std::vector<uint8_t> reached =
       ReachableCells(map, clearance, ChooseStartPosition(map, "museum"),
-                     [](float c) { return c > kInflationRadiusM; });
+                     [](float c) { return c > kMuseumInflationRadiusM; });
   for (size_t h = 0; h < layout.halls.size(); ++h) {
     EXPECT_TRUE(AnyCellIn(map, reached, layout.halls[h])) << "hall " << h;
   }

@@ -15,7 +15,7 @@ namespace {
 // SLAM map grow past its size limit (an internal error).
 constexpr double kMaxNoiseCoefficient = 10.0;
 
-void Require(bool ok, const std::string& key, double value) {
+void RequireOdometryOption(bool ok, const std::string& key, double value) {
   if (!ok) {
     std::ostringstream message;
     message << "robot.odometry." << key << " = " << value << ": expected a value in [0, "
@@ -29,10 +29,10 @@ bool InRange(double x) { return x >= 0.0 && x <= kMaxNoiseCoefficient; }
 }  // namespace
 
 void CheckOdometryNoiseOptions(const OdometryNoiseOptions& o) {
-  Require(InRange(o.trans_per_trans), "trans_per_trans", o.trans_per_trans);
-  Require(InRange(o.trans_per_rot), "trans_per_rot", o.trans_per_rot);
-  Require(InRange(o.rot_per_rot), "rot_per_rot", o.rot_per_rot);
-  Require(InRange(o.rot_per_trans), "rot_per_trans", o.rot_per_trans);
+  RequireOdometryOption(InRange(o.trans_per_trans), "trans_per_trans", o.trans_per_trans);
+  RequireOdometryOption(InRange(o.trans_per_rot), "trans_per_rot", o.trans_per_rot);
+  RequireOdometryOption(InRange(o.rot_per_rot), "rot_per_rot", o.rot_per_rot);
+  RequireOdometryOption(InRange(o.rot_per_trans), "rot_per_trans", o.rot_per_trans);
 }
 
 OdometryModel::OdometryModel(const OdometryNoiseOptions& options, uint64_t seed,

@@ -14,7 +14,7 @@
 namespace scout::sim {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+constexpr double kPiRad = std::numbers::pi;
 
 // True poses of a wiggly drive with reverse segments, 20 ms apart.
 std::vector<geometry::Rigid2d> WigglyTrajectory() {
@@ -114,8 +114,8 @@ TEST(OdometryModel, StraightDriftMatchesConfiguredNoise) {
   std::printf(
       "10 m straight, %d runs: along-track sd %.4f m (expected %.4f), heading sd %.3f deg "
       "(expected %.3f), position rms %.4f m\n",
-      runs, s.sd_along_m, expected_along_m, s.sd_heading_rad * 180 / kPi,
-      expected_heading_rad * 180 / kPi, s.rms_position_m);
+      runs, s.sd_along_m, expected_along_m, s.sd_heading_rad * 180 / kPiRad,
+      expected_heading_rad * 180 / kPiRad, s.rms_position_m);
   // The sample sd of 400 runs is within 10 % of the truth with ~95 % odds;
   // 15 % keeps the test stable yet fails on a wrong factor of sqrt(2).
   EXPECT_NEAR(s.sd_along_m / expected_along_m, 1.0, 0.15);
@@ -124,17 +124,18 @@ TEST(OdometryModel, StraightDriftMatchesConfiguredNoise) {
   // The documented defaults: 1-2 % of the distance, about 1 degree.
   EXPECT_GT(s.rms_position_m, 0.10);
   EXPECT_LT(s.rms_position_m, 0.20);
-  EXPECT_GT(s.sd_heading_rad * 180 / kPi, 0.7);
-  EXPECT_LT(s.sd_heading_rad * 180 / kPi, 1.3);
+  EXPECT_GT(s.sd_heading_rad * 180 / kPiRad, 0.7);
+  EXPECT_LT(s.sd_heading_rad * 180 / kPiRad, 1.3);
 }
 
 // One turn in place in 0.02 rad samples (1 rad/s at 50 Hz).
 TEST(OdometryModel, TurningDriftMatchesConfiguredNoise) {
   const OdometryNoiseOptions options;
-  const DriftStatistics s = MeasureDrift(options, 0.0, 2 * kPi / 314, 314, 400);
-  const double expected_heading_rad = options.rot_per_rot * std::sqrt(2 * kPi / 314 * 2 * kPi);
+  const DriftStatistics s = MeasureDrift(options, 0.0, 2 * kPiRad / 314, 314, 400);
+  const double expected_heading_rad =
+      options.rot_per_rot * std::sqrt(2 * kPiRad / 314 * 2 * kPiRad);
   std::printf("one turn in place: heading sd %.3f deg (expected %.3f)\n",
-              s.sd_heading_rad * 180 / kPi, expected_heading_rad * 180 / kPi);
+              s.sd_heading_rad * 180 / kPiRad, expected_heading_rad * 180 / kPiRad);
   EXPECT_NEAR(s.sd_heading_rad / expected_heading_rad, 1.0, 0.15);
 }
 

@@ -16,44 +16,48 @@
 namespace scout::sim {
 namespace {
 
-void Require(bool ok, const std::string& key, double value, const std::string& expected) {
+void RequireOfficeOption(bool ok, const std::string& key, double value,
+                         const std::string& expected) {
   RequireWorldOption(ok, "office world", key, value, expected);
 }
 
 void Validate(const OfficeWorldOptions& o) {
-  Require(o.resolution_m > 0.0, "resolution_m", o.resolution_m, "> 0");
-  Require(o.wall_thickness_m >= o.resolution_m, "wall_thickness_m", o.wall_thickness_m,
-          ">= resolution_m");
-  Require(o.corridor_width_m > 0.0, "corridor_width_m", o.corridor_width_m, "> 0");
-  Require(o.min_room_size_m > 0.0, "min_room_size_m", o.min_room_size_m, "> 0");
-  Require(o.max_room_size_m >= o.min_room_size_m, "max_room_size_m", o.max_room_size_m,
-          ">= min_room_size_m");
-  Require(o.min_door_width_m > 0.0, "min_door_width_m", o.min_door_width_m, "> 0");
-  Require(o.max_door_width_m >= o.min_door_width_m &&
-              o.max_door_width_m + 2.0 * o.wall_thickness_m <= o.min_room_size_m,
-          "max_door_width_m", o.max_door_width_m,
-          ">= min_door_width_m and fitting a room of min_room_size_m");
-  Require(o.narrow_gap_m > 0.0 && o.narrow_gap_m < o.min_door_width_m, "narrow_gap_m",
-          o.narrow_gap_m, "in (0, min_door_width_m)");
-  Require(o.ajar_door_fraction >= 0.0 && o.ajar_door_fraction <= 1.0, "ajar_door_fraction",
-          o.ajar_door_fraction, "in [0, 1]");
-  Require(o.min_furniture_per_room >= 0, "min_furniture_per_room", o.min_furniture_per_room,
-          ">= 0");
-  Require(o.max_furniture_per_room >= o.min_furniture_per_room, "max_furniture_per_room",
-          o.max_furniture_per_room, ">= min_furniture_per_room");
-  Require(o.min_furniture_size_m > 0.0, "min_furniture_size_m", o.min_furniture_size_m, "> 0");
-  Require(o.max_furniture_size_m >= o.min_furniture_size_m, "max_furniture_size_m",
-          o.max_furniture_size_m, ">= min_furniture_size_m");
-  Require(o.door_clearance_m >= 0.0, "door_clearance_m", o.door_clearance_m, ">= 0");
-  Require(o.furniture_attempts >= 1, "furniture_attempts", o.furniture_attempts, ">= 1");
+  RequireOfficeOption(o.resolution_m > 0.0, "resolution_m", o.resolution_m, "> 0");
+  RequireOfficeOption(o.wall_thickness_m >= o.resolution_m, "wall_thickness_m", o.wall_thickness_m,
+                      ">= resolution_m");
+  RequireOfficeOption(o.corridor_width_m > 0.0, "corridor_width_m", o.corridor_width_m, "> 0");
+  RequireOfficeOption(o.min_room_size_m > 0.0, "min_room_size_m", o.min_room_size_m, "> 0");
+  RequireOfficeOption(o.max_room_size_m >= o.min_room_size_m, "max_room_size_m", o.max_room_size_m,
+                      ">= min_room_size_m");
+  RequireOfficeOption(o.min_door_width_m > 0.0, "min_door_width_m", o.min_door_width_m, "> 0");
+  RequireOfficeOption(o.max_door_width_m >= o.min_door_width_m &&
+                          o.max_door_width_m + 2.0 * o.wall_thickness_m <= o.min_room_size_m,
+                      "max_door_width_m", o.max_door_width_m,
+                      ">= min_door_width_m and fitting a room of min_room_size_m");
+  RequireOfficeOption(o.narrow_gap_m > 0.0 && o.narrow_gap_m < o.min_door_width_m, "narrow_gap_m",
+                      o.narrow_gap_m, "in (0, min_door_width_m)");
+  RequireOfficeOption(o.ajar_door_fraction >= 0.0 && o.ajar_door_fraction <= 1.0,
+                      "ajar_door_fraction", o.ajar_door_fraction, "in [0, 1]");
+  RequireOfficeOption(o.min_furniture_per_room >= 0, "min_furniture_per_room",
+                      o.min_furniture_per_room, ">= 0");
+  RequireOfficeOption(o.max_furniture_per_room >= o.min_furniture_per_room,
+                      "max_furniture_per_room", o.max_furniture_per_room,
+                      ">= min_furniture_per_room");
+  RequireOfficeOption(o.min_furniture_size_m > 0.0, "min_furniture_size_m", o.min_furniture_size_m,
+                      "> 0");
+  RequireOfficeOption(o.max_furniture_size_m >= o.min_furniture_size_m, "max_furniture_size_m",
+                      o.max_furniture_size_m, ">= min_furniture_size_m");
+  RequireOfficeOption(o.door_clearance_m >= 0.0, "door_clearance_m", o.door_clearance_m, ">= 0");
+  RequireOfficeOption(o.furniture_attempts >= 1, "furniture_attempts", o.furniture_attempts,
+                      ">= 1");
   const double t = o.wall_thickness_m;
   const double c = o.corridor_width_m;
   const double min_width = 6 * t + 2 * c + 2 * o.max_room_size_m + o.min_room_size_m;
-  Require(o.width_m >= min_width, "width_m", o.width_m,
-          ">= " + FormatNumber(min_width) + " for these room and corridor sizes");
+  RequireOfficeOption(o.width_m >= min_width, "width_m", o.width_m,
+                      ">= " + FormatNumber(min_width) + " for these room and corridor sizes");
   const double min_height = 7 * t + 2 * c + 2 * o.max_room_size_m + 2 * o.min_room_size_m;
-  Require(o.height_m >= min_height, "height_m", o.height_m,
-          ">= " + FormatNumber(min_height) + " for these room and corridor sizes");
+  RequireOfficeOption(o.height_m >= min_height, "height_m", o.height_m,
+                      ">= " + FormatNumber(min_height) + " for these room and corridor sizes");
 }
 
 // The clear intervals of the plan along one axis: rooms, corridor, inner block,

@@ -35,7 +35,7 @@ struct RotationDeltaCost {
   double target_rad;
 };
 
-void CheckOption(bool ok, const char* name, double value, const char* expected) {
+void CheckCeresOption(bool ok, const char* name, double value, const char* expected) {
   if (!ok) {
     throw std::invalid_argument(std::string("ceres_scan_matcher.") + name + " must be " + expected +
                                 ", got " + FormatNumber(value));
@@ -45,18 +45,19 @@ void CheckOption(bool ok, const char* name, double value, const char* expected) 
 }  // namespace
 
 void Validate(const CeresScanMatcherOptions& options) {
-  CheckOption(options.occupied_space_weight > 0.0, "occupied_space_weight",
-              options.occupied_space_weight, "> 0");
-  CheckOption(options.translation_weight >= 0.0, "translation_weight", options.translation_weight,
-              ">= 0");
-  CheckOption(options.rotation_weight >= 0.0, "rotation_weight", options.rotation_weight, ">= 0");
-  CheckOption(options.unknown_probability >= grid::kMinProbability - 1e-6 &&
-                  options.unknown_probability <= grid::kMaxProbability + 1e-6,
-              "unknown_probability", options.unknown_probability, "in [0.1, 0.9]");
-  CheckOption(options.full_weight_num_points >= 0, "full_weight_num_points",
-              options.full_weight_num_points, ">= 0");
-  CheckOption(options.max_num_iterations >= 1, "max_num_iterations", options.max_num_iterations,
-              ">= 1");
+  CheckCeresOption(options.occupied_space_weight > 0.0, "occupied_space_weight",
+                   options.occupied_space_weight, "> 0");
+  CheckCeresOption(options.translation_weight >= 0.0, "translation_weight",
+                   options.translation_weight, ">= 0");
+  CheckCeresOption(options.rotation_weight >= 0.0, "rotation_weight", options.rotation_weight,
+                   ">= 0");
+  CheckCeresOption(options.unknown_probability >= grid::kMinProbability - 1e-6 &&
+                       options.unknown_probability <= grid::kMaxProbability + 1e-6,
+                   "unknown_probability", options.unknown_probability, "in [0.1, 0.9]");
+  CheckCeresOption(options.full_weight_num_points >= 0, "full_weight_num_points",
+                   options.full_weight_num_points, ">= 0");
+  CheckCeresOption(options.max_num_iterations >= 1, "max_num_iterations",
+                   options.max_num_iterations, ">= 1");
 }
 
 CeresScanMatcher::CeresScanMatcher(const CeresScanMatcherOptions& options) : options_(options) {

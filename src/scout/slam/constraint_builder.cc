@@ -12,7 +12,7 @@
 namespace scout::slam {
 namespace {
 
-void RequirePositive(const char* key, double value) {
+void RequirePositiveConstraintOption(const char* key, double value) {
   if (!(std::isfinite(value) && value > 0.0)) {
     throw std::invalid_argument(std::string("'slam.pose_graph.constraint_builder.") + key +
                                 "': expected a positive finite number, got " + FormatNumber(value));
@@ -97,7 +97,7 @@ void Validate(const ConstraintBuilderOptions& options) {
         "'slam.pose_graph.constraint_builder.sampling_ratio': expected a value in (0, 1], got " +
         FormatNumber(options.sampling_ratio));
   }
-  RequirePositive("max_constraint_distance_m", options.max_constraint_distance_m);
+  RequirePositiveConstraintOption("max_constraint_distance_m", options.max_constraint_distance_m);
   RequireFraction("min_score", options.min_score);
   RequireFraction("min_score_fraction_of_own_scans", options.min_score_fraction_of_own_scans);
   RequireFraction("min_overlap", options.min_overlap);
@@ -114,10 +114,14 @@ void Validate(const ConstraintBuilderOptions& options) {
         std::to_string(options.min_num_points));
   }
   RequireNonNegative("wide_ambiguity_min_innovation_m", options.wide_ambiguity_min_innovation_m);
-  RequirePositive("wide_ambiguity_window_factor", options.wide_ambiguity_window_factor);
-  RequirePositive("wide_ambiguity_max_window_m", options.wide_ambiguity_max_window_m);
-  RequirePositive("loop_closure_translation_weight", options.loop_closure_translation_weight);
-  RequirePositive("loop_closure_rotation_weight", options.loop_closure_rotation_weight);
+  RequirePositiveConstraintOption("wide_ambiguity_window_factor",
+                                  options.wide_ambiguity_window_factor);
+  RequirePositiveConstraintOption("wide_ambiguity_max_window_m",
+                                  options.wide_ambiguity_max_window_m);
+  RequirePositiveConstraintOption("loop_closure_translation_weight",
+                                  options.loop_closure_translation_weight);
+  RequirePositiveConstraintOption("loop_closure_rotation_weight",
+                                  options.loop_closure_rotation_weight);
   Validate(options.fast_correlative_scan_matcher);
   Validate(options.ceres_scan_matcher);
 }

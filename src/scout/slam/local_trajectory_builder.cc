@@ -10,7 +10,7 @@
 namespace scout::slam {
 namespace {
 
-void CheckOption(bool ok, const std::string& name, double value, const char* expected) {
+void CheckLocalOption(bool ok, const std::string& name, double value, const char* expected) {
   if (!ok) {
     throw std::invalid_argument("slam.local." + name + " must be " + expected + ", got " +
                                 FormatNumber(value));
@@ -25,8 +25,8 @@ const LocalSlamOptions& Validated(const LocalSlamOptions& options) {
 }  // namespace
 
 void Validate(const LocalSlamOptions& options) {
-  CheckOption(options.voxel_filter_size_m > 0.0 && std::isfinite(options.voxel_filter_size_m),
-              "voxel_filter_size_m", options.voxel_filter_size_m, "finite and > 0");
+  CheckLocalOption(options.voxel_filter_size_m > 0.0 && std::isfinite(options.voxel_filter_size_m),
+                   "voxel_filter_size_m", options.voxel_filter_size_m, "finite and > 0");
   // The parts name their keys from their own section ("submaps.resolution_m");
   // the user's options file has them under slam.local.
   try {

@@ -13,7 +13,7 @@
 namespace scout::slam {
 namespace {
 
-void RequirePositive(const char* key, double value) {
+void RequirePositivePoseGraphOption(const char* key, double value) {
   if (!(std::isfinite(value) && value > 0.0)) {
     throw std::invalid_argument(std::string("'slam.pose_graph.") + key +
                                 "': expected a positive finite number, got " + FormatNumber(value));
@@ -56,20 +56,22 @@ void Validate(const PoseGraphOptions& options) {
     throw std::invalid_argument("'slam.pose_graph.skip_neighbour_submaps': expected >= 0, got " +
                                 std::to_string(options.skip_neighbour_submaps));
   }
-  RequirePositive("intra_submap_translation_weight", options.intra_submap_translation_weight);
+  RequirePositivePoseGraphOption("intra_submap_translation_weight",
+                                 options.intra_submap_translation_weight);
   if (!(options.loop_closure_chain_travel_m >= 0.0) ||
       !std::isfinite(options.loop_closure_chain_travel_m)) {
     throw std::invalid_argument(
         "'slam.pose_graph.loop_closure_chain_travel_m': expected a finite value >= 0, got " +
         FormatNumber(options.loop_closure_chain_travel_m));
   }
-  RequirePositive("outlier_translation_m", options.outlier_translation_m);
-  RequirePositive("outlier_rotation_deg", options.outlier_rotation_deg);
+  RequirePositivePoseGraphOption("outlier_translation_m", options.outlier_translation_m);
+  RequirePositivePoseGraphOption("outlier_rotation_deg", options.outlier_rotation_deg);
   if (options.max_outlier_rounds < 0) {
     throw std::invalid_argument("'slam.pose_graph.max_outlier_rounds': expected >= 0, got " +
                                 std::to_string(options.max_outlier_rounds));
   }
-  RequirePositive("intra_submap_rotation_weight", options.intra_submap_rotation_weight);
+  RequirePositivePoseGraphOption("intra_submap_rotation_weight",
+                                 options.intra_submap_rotation_weight);
   Validate(options.loop_closure_voxel_filter);
   Validate(options.constraint_builder);
   Validate(options.optimization_problem);

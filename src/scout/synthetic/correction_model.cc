@@ -14,7 +14,8 @@ namespace {
 
 using geometry::Rigid2d;
 
-void Require(bool ok, const std::string& key, double value, const std::string& expected) {
+void RequireCorrectionOption(bool ok, const std::string& key, double value,
+                             const std::string& expected) {
   if (!ok) {
     throw InputError("corrections." + key + " = " + FormatNumber(value) + ": expected " + expected);
   }
@@ -23,31 +24,33 @@ void Require(bool ok, const std::string& key, double value, const std::string& e
 }  // namespace
 
 void Validate(const CorrectionModelOptions& o) {
-  Require(o.drift_translation_m_per_sqrt_m >= 0.0, "drift_translation_m_per_sqrt_m",
-          o.drift_translation_m_per_sqrt_m, ">= 0");
-  Require(o.drift_heading_rad_per_sqrt_m >= 0.0, "drift_heading_rad_per_sqrt_m",
-          o.drift_heading_rad_per_sqrt_m, ">= 0");
-  Require(o.drift_heading_rad_per_sqrt_rad >= 0.0, "drift_heading_rad_per_sqrt_rad",
-          o.drift_heading_rad_per_sqrt_rad, ">= 0");
-  Require(o.newest_pull_fraction >= 0.0 && o.newest_pull_fraction <= 1.0, "newest_pull_fraction",
-          o.newest_pull_fraction, "in [0, 1]");
-  Require(o.pull_decay_per_submap >= 0.0 && o.pull_decay_per_submap < 1.0, "pull_decay_per_submap",
-          o.pull_decay_per_submap, "in [0, 1)");
-  Require(o.newest_jitter_m >= 0.0, "newest_jitter_m", o.newest_jitter_m, ">= 0");
-  Require(o.newest_jitter_rad >= 0.0, "newest_jitter_rad", o.newest_jitter_rad, ">= 0");
-  Require(o.min_nudge_m >= 0.0, "min_nudge_m", o.min_nudge_m, ">= 0");
-  Require(o.min_nudge_rad >= 0.0, "min_nudge_rad", o.min_nudge_rad, ">= 0");
-  Require(o.loop_closure_distance_m > 0.0, "loop_closure_distance_m", o.loop_closure_distance_m,
-          "> 0");
-  Require(o.min_loop_closure_age_submaps >= 1, "min_loop_closure_age_submaps",
-          o.min_loop_closure_age_submaps, ">= 1");
-  Require(o.min_loop_closure_travel_m >= 0.0, "min_loop_closure_travel_m",
-          o.min_loop_closure_travel_m, ">= 0");
-  Require(o.loop_closure_error_m >= 0.0, "loop_closure_error_m", o.loop_closure_error_m, ">= 0");
-  Require(o.loop_closure_error_rad >= 0.0, "loop_closure_error_rad", o.loop_closure_error_rad,
-          ">= 0");
-  Require(o.loop_closure_sample_spacing_m >= 0.0, "loop_closure_sample_spacing_m",
-          o.loop_closure_sample_spacing_m, ">= 0");
+  RequireCorrectionOption(o.drift_translation_m_per_sqrt_m >= 0.0, "drift_translation_m_per_sqrt_m",
+                          o.drift_translation_m_per_sqrt_m, ">= 0");
+  RequireCorrectionOption(o.drift_heading_rad_per_sqrt_m >= 0.0, "drift_heading_rad_per_sqrt_m",
+                          o.drift_heading_rad_per_sqrt_m, ">= 0");
+  RequireCorrectionOption(o.drift_heading_rad_per_sqrt_rad >= 0.0, "drift_heading_rad_per_sqrt_rad",
+                          o.drift_heading_rad_per_sqrt_rad, ">= 0");
+  RequireCorrectionOption(o.newest_pull_fraction >= 0.0 && o.newest_pull_fraction <= 1.0,
+                          "newest_pull_fraction", o.newest_pull_fraction, "in [0, 1]");
+  RequireCorrectionOption(o.pull_decay_per_submap >= 0.0 && o.pull_decay_per_submap < 1.0,
+                          "pull_decay_per_submap", o.pull_decay_per_submap, "in [0, 1)");
+  RequireCorrectionOption(o.newest_jitter_m >= 0.0, "newest_jitter_m", o.newest_jitter_m, ">= 0");
+  RequireCorrectionOption(o.newest_jitter_rad >= 0.0, "newest_jitter_rad", o.newest_jitter_rad,
+                          ">= 0");
+  RequireCorrectionOption(o.min_nudge_m >= 0.0, "min_nudge_m", o.min_nudge_m, ">= 0");
+  RequireCorrectionOption(o.min_nudge_rad >= 0.0, "min_nudge_rad", o.min_nudge_rad, ">= 0");
+  RequireCorrectionOption(o.loop_closure_distance_m > 0.0, "loop_closure_distance_m",
+                          o.loop_closure_distance_m, "> 0");
+  RequireCorrectionOption(o.min_loop_closure_age_submaps >= 1, "min_loop_closure_age_submaps",
+                          o.min_loop_closure_age_submaps, ">= 1");
+  RequireCorrectionOption(o.min_loop_closure_travel_m >= 0.0, "min_loop_closure_travel_m",
+                          o.min_loop_closure_travel_m, ">= 0");
+  RequireCorrectionOption(o.loop_closure_error_m >= 0.0, "loop_closure_error_m",
+                          o.loop_closure_error_m, ">= 0");
+  RequireCorrectionOption(o.loop_closure_error_rad >= 0.0, "loop_closure_error_rad",
+                          o.loop_closure_error_rad, ">= 0");
+  RequireCorrectionOption(o.loop_closure_sample_spacing_m >= 0.0, "loop_closure_sample_spacing_m",
+                          o.loop_closure_sample_spacing_m, ">= 0");
 }
 
 namespace {

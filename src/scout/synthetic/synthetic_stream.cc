@@ -20,7 +20,8 @@ using geometry::Rigid2d;
 constexpr uint64_t kLidarStream = 1;
 constexpr uint64_t kCorrectionStream = 2;
 
-void Require(bool ok, const std::string& key, double value, const std::string& expected) {
+void RequireStreamOption(bool ok, const std::string& key, double value,
+                         const std::string& expected) {
   if (!ok) {
     throw InputError("synthetic." + key + " = " + FormatNumber(value) + ": expected " + expected);
   }
@@ -47,16 +48,17 @@ std::vector<Eigen::Vector2d> Transformed(const Rigid2d& transform,
 
 void Validate(const SyntheticStreamOptions& o) {
   // As slam.local.submaps.resolution_m.
-  Require(o.resolution_m >= 0.01 && o.resolution_m <= 1.0, "resolution_m", o.resolution_m,
-          "in [0.01, 1] (m)");
-  Require(o.scans_per_submap >= 1, "scans_per_submap", o.scans_per_submap, ">= 1");
-  Require(o.scan_spacing_m > 0.0, "scan_spacing_m", o.scan_spacing_m, "> 0");
-  Require(o.scan_spacing_rad > 0.0, "scan_spacing_rad", o.scan_spacing_rad, "> 0");
-  Require(o.linear_speed_mps > 0.0, "linear_speed_mps", o.linear_speed_mps, "> 0");
-  Require(o.angular_speed_radps > 0.0, "angular_speed_radps", o.angular_speed_radps, "> 0");
-  Require(o.optimize_every_n_scans >= 1, "optimize_every_n_scans", o.optimize_every_n_scans,
-          ">= 1");
-  Require(o.max_scans >= 0, "max_scans", o.max_scans, ">= 0");
+  RequireStreamOption(o.resolution_m >= 0.01 && o.resolution_m <= 1.0, "resolution_m",
+                      o.resolution_m, "in [0.01, 1] (m)");
+  RequireStreamOption(o.scans_per_submap >= 1, "scans_per_submap", o.scans_per_submap, ">= 1");
+  RequireStreamOption(o.scan_spacing_m > 0.0, "scan_spacing_m", o.scan_spacing_m, "> 0");
+  RequireStreamOption(o.scan_spacing_rad > 0.0, "scan_spacing_rad", o.scan_spacing_rad, "> 0");
+  RequireStreamOption(o.linear_speed_mps > 0.0, "linear_speed_mps", o.linear_speed_mps, "> 0");
+  RequireStreamOption(o.angular_speed_radps > 0.0, "angular_speed_radps", o.angular_speed_radps,
+                      "> 0");
+  RequireStreamOption(o.optimize_every_n_scans >= 1, "optimize_every_n_scans",
+                      o.optimize_every_n_scans, ">= 1");
+  RequireStreamOption(o.max_scans >= 0, "max_scans", o.max_scans, ">= 0");
   try {
     sensor::Validate(o.range_filter);
   } catch (const std::invalid_argument& e) {

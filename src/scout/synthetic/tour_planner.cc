@@ -16,7 +16,7 @@ namespace {
 
 constexpr double kUnbounded = std::numeric_limits<double>::infinity();
 
-void Require(bool ok, const std::string& key, double value, const std::string& expected) {
+void RequireTourOption(bool ok, const std::string& key, double value, const std::string& expected) {
   if (!ok) {
     throw InputError("tour." + key + " = " + FormatNumber(value) + ": expected " + expected);
   }
@@ -75,15 +75,17 @@ std::vector<Eigen::Vector2d> SmoothLeg(const std::vector<int64_t>& cells, const 
 }  // namespace
 
 void Validate(const TourOptions& o) {
-  Require(o.path_clearance_m >= 0.0, "path_clearance_m", o.path_clearance_m, ">= 0");
-  Require(o.waypoint_clearance_m >= o.path_clearance_m, "waypoint_clearance_m",
-          o.waypoint_clearance_m, ">= path_clearance_m");
-  Require(o.waypoint_spacing_m > 0.0, "waypoint_spacing_m", o.waypoint_spacing_m, "> 0");
-  Require(o.max_shortcut_m > 0.0, "max_shortcut_m", o.max_shortcut_m, "> 0");
-  Require(o.smoothing_spacing_m > 0.0, "smoothing_spacing_m", o.smoothing_spacing_m, "> 0");
-  Require(o.smoothing_iterations >= 0, "smoothing_iterations", o.smoothing_iterations, ">= 0");
-  Require(o.min_pose_clearance_m >= 0.0 && o.min_pose_clearance_m <= o.path_clearance_m,
-          "min_pose_clearance_m", o.min_pose_clearance_m, "in [0, path_clearance_m]");
+  RequireTourOption(o.path_clearance_m >= 0.0, "path_clearance_m", o.path_clearance_m, ">= 0");
+  RequireTourOption(o.waypoint_clearance_m >= o.path_clearance_m, "waypoint_clearance_m",
+                    o.waypoint_clearance_m, ">= path_clearance_m");
+  RequireTourOption(o.waypoint_spacing_m > 0.0, "waypoint_spacing_m", o.waypoint_spacing_m, "> 0");
+  RequireTourOption(o.max_shortcut_m > 0.0, "max_shortcut_m", o.max_shortcut_m, "> 0");
+  RequireTourOption(o.smoothing_spacing_m > 0.0, "smoothing_spacing_m", o.smoothing_spacing_m,
+                    "> 0");
+  RequireTourOption(o.smoothing_iterations >= 0, "smoothing_iterations", o.smoothing_iterations,
+                    ">= 0");
+  RequireTourOption(o.min_pose_clearance_m >= 0.0 && o.min_pose_clearance_m <= o.path_clearance_m,
+                    "min_pose_clearance_m", o.min_pose_clearance_m, "in [0, path_clearance_m]");
 }
 
 std::vector<Eigen::Vector2d> PlanTour(const sim::World& world, const TourOptions& o) {
