@@ -103,4 +103,13 @@ make_run explore-c "$(git rev-parse --short=12 "$EXPLORE_BEHAVIOUR_COMMIT~1")"
 [[ $(stale_section_run explore explore-c) == '`explore-c` ' ]] || fail "an explore run older than $EXPLORE_BEHAVIOUR_COMMIT is not stale"
 git rev-parse --short=12 "$EXPLORE_BEHAVIOUR_COMMIT" >"$OUT/explore-c/build.txt"
 [[ -z $(stale_section_run explore explore-c) ]] || fail "an explore run made by $EXPLORE_BEHAVIOUR_COMMIT is stale"
+# A run whose input is absent is listed as skipped, with the missing file, not as failed.
+declare -A COMMAND=([replay-b]="scout replay b" [replay-c]="scout replay c")
+declare -A ABSENT=([replay-b]=/no/data/b.log.gz)
+DATA=/no/data
+listed=$(not_run replay-b replay-c)
+grep -q '^\*\*Skipped, their input is absent' <<<"$listed" || fail "an absent input is not named"
+grep -q '`replay-b`: `/no/data/b.log.gz`' <<<"$listed" || fail "the skipped run's file is not listed"
+grep -q '^scout replay c$' <<<"$listed" || fail "a run that is missing for another reason is not listed"
+grep -q '^scout replay b$' <<<"$listed" && fail "a skipped run is listed as not run"
 echo "results store: all checks passed"
