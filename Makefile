@@ -31,7 +31,8 @@ test: build
 test-asan:
 	$(MAKE) test PRESET=asan
 
-# ThreadSanitizer (11 minutes on 2 cores from scratch; not in CI, which would pass 30 minutes).
+# ThreadSanitizer (11 minutes on 2 cores from scratch before the unity builds, not measured since;
+# not in CI, whose three steps take about 17 minutes).
 test-tsan:
 	$(MAKE) test PRESET=tsan
 
