@@ -434,16 +434,14 @@ write_document() {
 # check_document: the quick run must have produced tables for every section and figures.
 check_document() {
   local n expected=6
-  # The replay's two tables need a Radish log of ../shared/data.
-  [[ -n ${ABSENT[replay-intel]:-} ]] && expected=4
+  local figures=(epsilon-epsilon_points epsilon-epsilon_accuracy size-size_points size-size_time
+    explore-compare_coverage_path)
+  # The replay's two tables and its figure need a Radish log of ../shared/data.
+  if [[ -n ${ABSENT[replay-intel]:-} ]]; then expected=4; else figures+=(replay-compare_p); fi
   n=$(grep -c '^| run |' "$DOC" || true)
   [[ $n -ge $expected ]] ||
     { echo "results: $DOC has $n tables, expected >= $expected" >&2; exit 1; }
   if grep -q '^\*\*Not run' "$DOC"; then echo "results: $DOC lists runs as not run" >&2; exit 1; fi
-  local figures=(epsilon-epsilon_points epsilon-epsilon_accuracy size-size_points size-size_time
-    explore-compare_coverage_path)
-  # The replay needs a Radish log of ../shared/data; without it there is no replay figure.
-  [[ -z ${ABSENT[replay-intel]:-} ]] && figures+=(replay-compare_p)
   for f in "${figures[@]}"; do
     grep -q '</svg>' "$FIG/$f.svg" 2>/dev/null || { echo "results: $FIG/$f.svg missing" >&2; exit 1; }
   done
