@@ -8,6 +8,7 @@
 
 #include "scout/explore/mean_shift.h"
 #include "scout/explore/option_check.h"
+#include "scout/explore/tour.h"
 
 namespace scout::explore {
 
@@ -53,7 +54,8 @@ class ScoutPolicy : public GoalPolicy {
                                  in.current_goal, options_)) {
       goals.push_back({p.position, p.revenue});
     }
-    return goals;  // already best first
+    if (options_.tour_points >= 2) OrderByTour(in, goals);
+    return goals;  // best first
   }
 
  private:
@@ -69,6 +71,39 @@ class ScoutPolicy : public GoalPolicy {
     }
     return frontier;
   }
+
+  // The first tour_points goals (best revenue first) ranked by their open
+  // tour length, shortest first (score: minus the length, metres); the rest
+  // keep their order below them.
+  void OrderByTour(const PolicyInput& in, std::vector<GoalCandidate>& goals) const {
+    const size_t k = std::min<size_t>(options_.tour_points, goals.size());
+    if (k < 2) return;
+    const double snap = in.map->options().goal_snap_radius_m;
+    std::vector<grid::CellIndex> cells;
+    std::vector<double> first_leg_m;
+    for (size_t i = 0; i < k; ++i) {
+      // Every navigation point has a reached cell within the snap radius.
+      const auto reached = in.distances->NearestReached(goals[i].position, snap);
+      if (!reached) return;
+      cells.push_back(reached->cell);
+      first_leg_m.push_back(reached->distance_m);
+    }
+    const std::vector<double> length =
+        OpenTourLengths(first_leg_m, CoarsePathDistances(*in.map, cells, kTourCell_m));
+    double worst = -std::numeric_limits<double>::infinity();
+    for (size_t i = 0; i < k; ++i) {
+      goals[i].score = -length[i];
+      worst = std::max(worst, length[i]);
+    }
+    for (size_t i = k; i < goals.size(); ++i) goals[i].score = -worst - 1.0 - double(i - k);
+    std::stable_sort(
+        goals.begin(), goals.begin() + k,
+        [](const GoalCandidate& a, const GoalCandidate& b) { return a.score > b.score; });
+  }
+  // Coarse enough that the pairwise searches cost less than the robot's own
+  // distance field; fine enough that the map's inflated walls (0.3 m on
+  // each side) stay closed.
+  static constexpr double kTourCell_m = 0.2;
 
   NavigationPointOptions options_;
 };

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "scout/explore/option_check.h"
+#include "scout/explore/tour.h"
 
 namespace scout::explore {
 
@@ -15,6 +16,10 @@ void Validate(const NavigationPointOptions& o) {
   CheckAtLeast("navigation_points", "info_multiplier", o.info_multiplier, 0.0);
   CheckAtLeast("navigation_points", "hysteresis_radius_m", o.hysteresis_radius_m, 0.0);
   CheckAtLeast("navigation_points", "hysteresis_gain", o.hysteresis_gain, 0.0);
+  if (o.tour_points != 0 && (o.tour_points < 2 || o.tour_points > kMaxTourPoints)) {
+    RejectOption("navigation_points", "tour_points",
+                 "0 (off) or 2 to " + std::to_string(kMaxTourPoints), o.tour_points);
+  }
 }
 
 double UnknownAreaWithin(const PlanningMap& map, const Eigen::Vector2d& p, double radius_m,

@@ -35,6 +35,11 @@ struct NavigationPointOptions {
   // marginally better one (rrt_exploration's defaults).
   double hysteresis_radius_m = 3.0;
   double hysteresis_gain = 2.0;
+  // Scout's policy only: when at least 2, the best this many navigation points
+  // (by revenue) are ranked by the shortest open tour that starts at the robot,
+  // begins with the point and visits all of them (explore/tour.h), instead of
+  // by revenue; the rest follow in revenue order. 0: off. At most 12.
+  int tour_points = 0;
 };
 
 // Throws std::invalid_argument naming the key of a bad value.

@@ -5,6 +5,7 @@
 
 #include "scout/common/error.h"
 #include "scout/common/format.h"
+#include "scout/explore/tour.h"
 
 namespace scout::io {
 namespace {
@@ -89,6 +90,7 @@ void ReadPolicy(YamlSection s, explore::GoalPolicyOptions* o) {
     n.ReadNonNegative("info_multiplier", &v.info_multiplier);
     n.ReadNonNegativeAtMost("hysteresis_radius_m", &v.hysteresis_radius_m, 20.0);
     n.ReadPositive("hysteresis_gain", &v.hysteresis_gain);
+    n.ReadInt("tour_points", &v.tour_points, 0, explore::kMaxTourPoints);
     n.RejectUnknownKeys();
   }
   {

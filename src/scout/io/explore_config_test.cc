@@ -67,6 +67,7 @@ TEST_F(ExploreConfigTest, DefaultFileMatchesTheBuiltInDefaults) {
                    d.explore.policy.navigation.mean_shift.bandwidth_m);
   EXPECT_DOUBLE_EQ(c.explore.policy.navigation.info_multiplier,
                    d.explore.policy.navigation.info_multiplier);
+  EXPECT_EQ(c.explore.policy.navigation.tour_points, d.explore.policy.navigation.tour_points);
   EXPECT_DOUBLE_EQ(c.explore.policy.explore_lite.potential_scale,
                    d.explore.policy.explore_lite.potential_scale);
   EXPECT_DOUBLE_EQ(c.robot.robot.radius_m, d.robot.robot.radius_m);
@@ -143,6 +144,12 @@ TEST_F(ExploreConfigTest, ErrorsNameTheKey) {
   EXPECT_NE(follower.find("explore.follower"), std::string::npos) << follower;
   const std::string predict = ErrorOf("explore:\n  goals:\n    guard:\n      predict_motion: 2\n");
   EXPECT_NE(predict.find("explore.goals.guard.predict_motion"), std::string::npos) << predict;
+  const std::string tour = ErrorOf("explore:\n  policy:\n    navigation:\n      tour_points: 1\n");
+  EXPECT_NE(tour.find("tour_points': expected 0 (off) or 2 to 12, got 1"), std::string::npos)
+      << tour;
+  EXPECT_EQ(Load("explore:\n  policy:\n    navigation:\n      tour_points: 5\n")
+                .explore.policy.navigation.tour_points,
+            5);
   const std::string dropout = ErrorOf("robot:\n  lidar:\n    dropout_probability: 1.5\n");
   EXPECT_NE(dropout.find("robot.lidar.dropout_probability"), std::string::npos) << dropout;
   const std::string fov = ErrorOf("robot:\n  lidar:\n    fov_deg: 400\n");
