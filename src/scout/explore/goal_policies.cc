@@ -100,9 +100,9 @@ class ScoutPolicy : public GoalPolicy {
         goals.begin(), goals.begin() + k,
         [](const GoalCandidate& a, const GoalCandidate& b) { return a.score > b.score; });
   }
-  // Coarse enough that the pairwise searches cost less than the robot's own
-  // distance field; fine enough that the map's inflated walls (0.3 m on
-  // each side) stay closed.
+  // A sixteenth of the cells of a 5 cm map for the pairwise searches; a
+  // closed band at least two coarse cells (0.4 m) wide stays closed, and a
+  // wall inflated by the robot's radius and margin on both sides is wider.
   static constexpr double kTourCell_m = 0.2;
 
   NavigationPointOptions options_;
