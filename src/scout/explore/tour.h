@@ -20,8 +20,8 @@ namespace scout::explore {
 // coarse grid of cells of about 'coarse_cell_m': a coarse cell is open when
 // any of its cells is traversable, so every way the fine map allows is open,
 // and a closed band at least two coarse cells wide (a wall the map inflates
-// by a coarse cell's width on each side) stays closed. A pair with no coarse path gets infinity. Symmetric, zero on
-// the diagonal.
+// by a coarse cell's width on each side) stays closed. A pair with no coarse
+// path gets infinity. Symmetric, zero on the diagonal.
 std::vector<std::vector<double>> CoarsePathDistances(const PlanningMap& map,
                                                      const std::vector<grid::CellIndex>& cells,
                                                      double coarse_cell_m);
