@@ -48,13 +48,12 @@ class ScoutPolicy : public GoalPolicy {
         in.prepared ? std::any_cast<FrontierPartition>(in.prepared) : nullptr;
     const FrontierPartition partition =
         prepared ? FrontierPartition{} : PartitionFrontier(*in.map, Avoiding(in), options_);
+    const std::vector<NavigationPoint> points =
+        ComputeNavigationPoints(*in.map, *in.distances, prepared ? *prepared : partition, in.robot,
+                                in.current_goal, options_);
     std::vector<GoalCandidate> goals;
-    for (const NavigationPoint& p :
-         ComputeNavigationPoints(*in.map, *in.distances, prepared ? *prepared : partition, in.robot,
-                                 in.current_goal, options_)) {
-      goals.push_back({p.position, p.revenue});
-    }
-    if (options_.tour_points >= 2) OrderByTour(in, goals);
+    for (const NavigationPoint& p : points) goals.push_back({p.position, p.revenue});
+    if (options_.tour_points >= 2) OrderByTour(*in.map, points, goals);
     return goals;  // best first
   }
 
@@ -75,21 +74,19 @@ class ScoutPolicy : public GoalPolicy {
   // The first tour_points goals (best revenue first) ranked by their open
   // tour length, shortest first (score: minus the length, metres); the rest
   // keep their order below them.
-  void OrderByTour(const PolicyInput& in, std::vector<GoalCandidate>& goals) const {
+  // 'goals' are 'points' in the same order.
+  void OrderByTour(const PlanningMap& map, const std::vector<NavigationPoint>& points,
+                   std::vector<GoalCandidate>& goals) const {
     const size_t k = std::min<size_t>(options_.tour_points, goals.size());
     if (k < 2) return;
-    const double snap = in.map->options().goal_snap_radius_m;
     std::vector<grid::CellIndex> cells;
     std::vector<double> first_leg_m;
     for (size_t i = 0; i < k; ++i) {
-      // Every navigation point has a reached cell within the snap radius.
-      const auto reached = in.distances->NearestReached(goals[i].position, snap);
-      if (!reached) return;
-      cells.push_back(reached->cell);
-      first_leg_m.push_back(reached->distance_m);
+      cells.push_back(points[i].reached_cell);
+      first_leg_m.push_back(points[i].cost_m);
     }
     const std::vector<double> length =
-        OpenTourLengths(first_leg_m, CoarsePathDistances(*in.map, cells, kTourCell_m));
+        OpenTourLengths(first_leg_m, CoarsePathDistances(map, cells, kTourCell_m));
     double worst = -std::numeric_limits<double>::infinity();
     for (size_t i = 0; i < k; ++i) {
       goals[i].score = -length[i];

@@ -152,6 +152,7 @@ std::vector<NavigationPoint> ComputeNavigationPoints(
       double path = std::numeric_limits<double>::infinity();
       double straight = std::numeric_limits<double>::infinity();
       int size = 0;
+      grid::CellIndex cell;
     };
     std::vector<Best> best(num_components);
     for (size_t i = 0; i < points.size(); ++i) {
@@ -162,7 +163,7 @@ std::vector<NavigationPoint> ComputeNavigationPoints(
       const double straight = (points[i] - robot).norm();
       if (reached->distance_m < b.path ||
           (reached->distance_m == b.path && straight < b.straight)) {
-        b = {static_cast<int>(i), reached->distance_m, straight, b.size};
+        b = {static_cast<int>(i), reached->distance_m, straight, b.size, reached->cell};
       }
     }
     for (const Best& b : best) {
@@ -173,6 +174,7 @@ std::vector<NavigationPoint> ComputeNavigationPoints(
       NavigationPoint np;
       np.position = points[b.index];
       np.cost_m = b.path;
+      np.reached_cell = b.cell;
       np.info_gain_m2 = UnknownAreaWithin(map, np.position, options.info_radius_m,
                                           options.outside_map_is_unknown);
       if (current_goal && (np.position - *current_goal).norm() <= options.hysteresis_radius_m) {

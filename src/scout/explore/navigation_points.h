@@ -48,8 +48,10 @@ void Validate(const NavigationPointOptions& options);
 struct NavigationPoint {
   // One of the input frontier points (never a centroid), global frame.
   Eigen::Vector2d position;
-  // Path distance from the robot over the inflated map, metres.
+  // Path distance from the robot over the inflated map, metres, to this
+  // reached cell (within goal_snap_radius_m of the point).
   double cost_m = 0.0;
+  grid::CellIndex reached_cell;
   // Unknown area around the point (after hysteresis), m².
   double info_gain_m2 = 0.0;
   double revenue = 0.0;
