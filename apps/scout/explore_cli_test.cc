@@ -23,6 +23,11 @@ using scout::grid::CellState;
 using Result = scout::testing::CliResult;
 using scout::testing::RunScout;
 
+std::string ReadFile(const fs::path& path) {
+  std::ifstream in(path);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
 // Writes a map_server map 'name'.yaml: walls everywhere except the cells whose
 // centres lie in one of the free boxes {x0, y0, x1, y1} (metres).
 void WriteMap(const fs::path& dir, const std::string& name, int width, int height,
@@ -297,15 +302,12 @@ TEST_F(ExploreCli, RecordsItsSensorStreamForReplayAgainstTheTruePoses) {
       RunScout("explore --quiet --record-log --max-sim-time 40" + rooms + " --out " + out.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   ASSERT_TRUE(fs::exists(out / "sensor.log"));
-  // The explore loop's local SLAM settings, so the replay sees what the loop saw.
-  scout::WriteTextFileAtomically(dir_ / "explore_slam.yaml",
-                                 "slam:\n  local:\n    use_online_correlative_scan_matching: "
-                                 "false\n    ceres_scan_matcher:\n      translation_weight: 5\n"
-                                 "      rotation_weight: 10\n");
+  // --explore-slam replays with the explore loop's SLAM settings, so the replay
+  // sees what the loop saw.
   const std::string log = (out / "sensor.log").string();
-  r = RunScout("replay " + log + " --reference " + log + " --synchronous --strategies exact" +
-               " --config " + (dir_ / "explore_slam.yaml").string() + " --quiet --out " +
-               (dir_ / "replay").string());
+  const std::string replay =
+      "replay " + log + " --reference " + log + " --strategies exact --quiet";
+  r = RunScout(replay + " --explore-slam --out " + (dir_ / "replay").string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   std::ifstream explore_in(out / "summary.json");
   const nlohmann::json explored = nlohmann::json::parse(explore_in);
@@ -315,6 +317,28 @@ TEST_F(ExploreCli, RecordsItsSensorStreamForReplayAgainstTheTruePoses) {
   EXPECT_EQ(replayed["scans"], explored["slam"]["scans"]);
   EXPECT_EQ(replayed["reference"]["matched_scans"], replayed["slam"]["nodes"]);
   EXPECT_LT(replayed["reference"]["ate_rmse_m"].get<double>(), 0.1);
+  EXPECT_EQ(replayed["slam"]["settings"], "explore");
+  EXPECT_EQ(replayed["slam"]["synchronous"], true);
+  // The same as the explorer's settings (config/default.yaml's explore section)
+  // written out for slam.local and the pose graph by hand: the same trajectory.
+  scout::WriteTextFileAtomically(
+      dir_ / "by_hand.yaml",
+      "slam:\n  local:\n    use_online_correlative_scan_matching: false\n"
+      "    ceres_scan_matcher:\n      translation_weight: 5\n      rotation_weight: 10\n"
+      "  pose_graph:\n    synchronous: true\n    synchronous_solve_delay_nodes: 10\n");
+  r = RunScout(replay + " --config " + (dir_ / "by_hand.yaml").string() + " --out " +
+               (dir_ / "by_hand").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const std::string explore_trajectory = ReadFile(dir_ / "replay" / "trajectory.tum");
+  EXPECT_EQ(ReadFile(dir_ / "by_hand" / "trajectory.tum"), explore_trajectory);
+  // And the explore section is what it reads: another translation prior there
+  // gives another trajectory.
+  scout::WriteTextFileAtomically(dir_ / "weak_prior.yaml",
+                                 "explore:\n  local_slam:\n    translation_weight: 0.5\n");
+  r = RunScout(replay + " --explore-slam --config " + (dir_ / "weak_prior.yaml").string() +
+               " --out " + (dir_ / "weak_prior").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(ReadFile(dir_ / "weak_prior" / "trajectory.tum"), explore_trajectory);
 
   // A lidar whose beams a FLASER line cannot describe is refused before anything is written.
   scout::WriteTextFileAtomically(dir_ / "wide.yaml",

@@ -294,7 +294,8 @@ CLI::App* AddExploreCommand(CLI::App& app, ExploreArgs* args) {
   cmd->add_flag("--quiet", args->quiet, "print only the final summary");
   cmd->add_flag("--record-log", args->record_log,
                 "also write sensor.log: every scan with its true and odometry pose as a CARMEN "
-                "log, to re-run SLAM on it with `scout replay sensor.log --reference sensor.log`");
+                "log, to re-run SLAM on it as the loop ran it with `scout replay sensor.log "
+                "--reference sensor.log --explore-slam`");
   cmd->add_option("--status", args->status_file,
                   "keep a JSON status of the running exploration in this file (state, poses, "
                   "goal, coverage, counters), rewritten atomically every 5 s of simulated time");

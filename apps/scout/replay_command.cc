@@ -194,6 +194,10 @@ CLI::App* AddReplayCommand(CLI::App& app, ReplayArgs* args) {
       ->check(NonNegativeInteger(std::numeric_limits<int>::max()));
   cmd->add_flag("--synchronous", args->synchronous,
                 "run global SLAM in the calling thread (deterministic; overrides the config)");
+  cmd->add_flag("--explore-slam", args->explore_slam,
+                "run SLAM with the settings `scout explore` runs it with (explore.local_slam "
+                "instead of slam.local's, and its synchronous solves): for a sensor.log written "
+                "by `scout explore --record-log`");
   cmd->add_flag("--quiet", args->quiet, "print only the final summary");
   return cmd;
 }
@@ -218,6 +222,10 @@ explore::MapNavigationPoints FinalNavigationPoints(const io::ScoutConfig& config
 int RunReplay(const ReplayArgs& args) {
   const frontier::Stopwatch wall;
   io::ScoutConfig config = LoadConfigOrDefaults(args.config_file);
+  // A recorded exploration replayed with the explorer's SLAM settings, so the
+  // replay runs the SLAM the loop ran rather than the one tuned for real logs.
+  if (args.explore_slam)
+    config.slam = exploration::EffectiveSlamOptions(ExplorationOptionsFrom(config));
   if (args.synchronous) config.slam.pose_graph.synchronous = true;
   // Validates options and names before any long work or any output.
   const std::vector<std::string> strategies = SplitList(args.strategies, "--strategies");
@@ -337,7 +345,8 @@ int RunReplay(const ReplayArgs& args) {
                      {"loop_closure_searches", stats.num_loop_closure_searches},
                      {"solve_time_s", stats.total_solve_time_s},
                      {"submap_events", stats.num_submap_events},
-                     {"synchronous", config.slam.pose_graph.synchronous}};
+                     {"synchronous", config.slam.pose_graph.synchronous},
+                     {"settings", args.explore_slam ? "explore" : "slam"}};
   const std::vector<int> node_scans = NodeScans(dataset, nodes);
   summary["consistency"] =
       ConsistencySummary(dataset, nodes, node_scans, reference ? &*reference : nullptr,

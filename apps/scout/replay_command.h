@@ -20,6 +20,7 @@ struct ReplayArgs {
   uint64_t seed = 1;
   int max_scans = 0;
   bool synchronous = false;
+  bool explore_slam = false;  // SLAM as `scout explore` runs it (explore.local_slam, its solves)
   bool quiet = false;
 };
 
