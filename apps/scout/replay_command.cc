@@ -224,8 +224,9 @@ int RunReplay(const ReplayArgs& args) {
   io::ScoutConfig config = LoadConfigOrDefaults(args.config_file);
   // A recorded exploration replayed with the explorer's SLAM settings, so the
   // replay runs the SLAM the loop ran rather than the one tuned for real logs.
-  if (args.explore_slam)
+  if (args.explore_slam) {
     config.slam = exploration::EffectiveSlamOptions(ExplorationOptionsFrom(config));
+  }
   if (args.synchronous) config.slam.pose_graph.synchronous = true;
   // Validates options and names before any long work or any output.
   const std::vector<std::string> strategies = SplitList(args.strategies, "--strategies");
