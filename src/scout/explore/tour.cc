@@ -46,13 +46,13 @@ std::vector<std::vector<double>> CoarsePathDistances(const PlanningMap& map,
     if (target[i] < 0 || !open[target[i]]) continue;
     // Dijkstra from i until every later candidate is settled (the earlier
     // ones found their distance to i already).
-    int remaining = 0;
     std::fill(dist.begin(), dist.end(), kInf);
     std::vector<std::pair<int64_t, int>> wanted;
     for (int j = i + 1; j < n; ++j) {
-      if (target[j] >= 0 && open[target[j]]) wanted.push_back({target[j], j}), ++remaining;
+      if (target[j] >= 0 && open[target[j]]) wanted.push_back({target[j], j});
     }
     std::sort(wanted.begin(), wanted.end());
+    size_t remaining = wanted.size();
     std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
     dist[target[i]] = 0.0;
     queue.push({0.0, target[i]});
@@ -74,7 +74,10 @@ std::vector<std::vector<double>> CoarsePathDistances(const PlanningMap& map,
           const int64_t v = static_cast<int64_t>(vy) * cw + vx;
           if (!open[v]) continue;
           const double dv = du + (dx != 0 && dy != 0 ? M_SQRT2 : 1.0);
-          if (dv < dist[v]) dist[v] = dv, queue.push({dv, v});
+          if (dv < dist[v]) {
+            dist[v] = dv;
+            queue.push({dv, v});
+          }
         }
       }
     }

@@ -1,10 +1,8 @@
 #ifndef SCOUT_EXPLORE_TOUR_H_
 #define SCOUT_EXPLORE_TOUR_H_
 
-#include <Eigen/Core>
 #include <vector>
 
-#include "scout/explore/path_distance_field.h"
 #include "scout/explore/planning_map.h"
 
 namespace scout::explore {
