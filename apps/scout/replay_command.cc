@@ -365,11 +365,25 @@ int RunReplay(const ReplayArgs& args) {
   summary["submap_update_ms"] = engine.catalog_time_ms();
   summary["frontier"] = io::FrontierSummary(engine);
   const std::vector<Eigen::Vector2d> frontier = engine.GlobalFrontier(picture_strategy);
+  // Submaps a diverged SLAM threw kilometres apart would need a map of
+  // billions of cells: the map is then written coarser, and navigation points,
+  // which need the robot's own resolution, are not looked for.
+  const double map_resolution_m = io::GlobalMapResolution(submaps);
+  const bool map_coarsened = map_resolution_m > config.slam.local.submaps.resolution_m * 1.5;
+  summary["map_resolution_m"] = map_resolution_m;
+  if (map_coarsened) {
+    std::cerr << "replay: warning: the submaps lie too far apart for a map at "
+              << config.slam.local.submaps.resolution_m << " m (has SLAM diverged?): map.yaml is "
+              << "written at " << map_resolution_m
+              << " m and no navigation points are looked for\n";
+  }
   const frontier::Stopwatch navigation_watch;
   const explore::MapNavigationPoints navigation =
-      FinalNavigationPoints(config, submaps, frontier, nodes);
+      map_coarsened ? explore::MapNavigationPoints{}
+                    : FinalNavigationPoints(config, submaps, frontier, nodes);
   const double navigation_time_s = navigation_watch.ElapsedUs() * 1e-6;
   summary["navigation_points"] = {
+      {"skipped_coarse_map", map_coarsened},
       {"strategy", picture_strategy},
       {"frontier_points", frontier.size()},
       {"frontier_points_in_boundary", navigation.frontier_points_in_boundary},
@@ -444,9 +458,14 @@ int RunReplay(const ReplayArgs& args) {
     std::cout << "\n";
   }
   PrintStrategyTable(engine, std::cout);
-  std::cout << "navigation points: " << navigation.points.size() << " from the last pose ("
-            << frontier.size() << " " << picture_strategy << " frontier points, "
-            << navigation.stats.unreachable_components << " unreachable components)";
+  if (map_coarsened) {
+    std::cout << "navigation points: not looked for (map coarsened to " << map_resolution_m
+              << " m, see the warning above)";
+  } else {
+    std::cout << "navigation points: " << navigation.points.size() << " from the last pose ("
+              << frontier.size() << " " << picture_strategy << " frontier points, "
+              << navigation.stats.unreachable_components << " unreachable components)";
+  }
   if (!navigation.points.empty()) {
     const explore::NavigationPoint& best = navigation.points.front();
     std::cout << "; best (" << std::setprecision(2) << best.position.x() << ", "

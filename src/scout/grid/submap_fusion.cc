@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include "scout/geometry/box.h"
 #include "scout/grid/probability_values.h"
@@ -38,6 +40,18 @@ void NarrowToInside(double start, double step, int limit, int* first, int* last)
   if (to < *last) *last = to < *first ? *first - 1 : static_cast<int>(to);
 }
 
+// The union of the submaps' boxes in the global frame.
+geometry::Box2d SubmapBounds(const std::vector<PlacedGrid>& submaps) {
+  geometry::Box2d bounds;
+  for (const PlacedGrid& s : submaps) {
+    const geometry::Box2d b = geometry::TransformBox(s.global_pose, s.grid->limits().Bounds());
+    if (b.empty()) continue;
+    bounds.Extend(b.min);
+    bounds.Extend(b.max);
+  }
+  return bounds;
+}
+
 }  // namespace
 
 namespace fusion {
@@ -60,8 +74,15 @@ LatticeRect LatticeRect::Intersected(const LatticeRect& o) const {
 }
 
 void LogOddsSums::Reset(const LatticeRect& r) {
+  const int64_t cells = r.empty() ? 0 : static_cast<int64_t>(r.width) * r.height;
+  if (cells > kMaxFusedCells) {
+    throw std::length_error("fusing submaps: a map of " + std::to_string(r.width) + " x " +
+                            std::to_string(r.height) + " cells is beyond the limit of " +
+                            std::to_string(kMaxFusedCells) +
+                            " (the submaps lie that far apart: has SLAM diverged?)");
+  }
   rect = r;
-  const size_t n = r.empty() ? 0 : static_cast<size_t>(r.width) * r.height;
+  const size_t n = static_cast<size_t>(cells);
   log_odds.assign(n, 0.f);
   known.assign(n, 0);
 }
@@ -79,20 +100,24 @@ LatticeRect SubmapCells(const PlacedGrid& submap, double resolution_m) {
 
 MapLimits FusedLimits(const std::vector<PlacedGrid>& submaps, double resolution_m,
                       LatticeRect* lattice) {
-  geometry::Box2d bounds;
-  for (const PlacedGrid& s : submaps) {
-    const geometry::Box2d b = geometry::TransformBox(s.global_pose, s.grid->limits().Bounds());
-    if (b.empty()) continue;
-    bounds.Extend(b.min);
-    bounds.Extend(b.max);
-  }
+  const geometry::Box2d bounds = SubmapBounds(submaps);
   *lattice = {};
   if (bounds.empty()) return MapLimits();
   const double kx = std::floor(bounds.min.x() / resolution_m);
   const double ky = std::floor(bounds.min.y() / resolution_m);
   const Eigen::Vector2d origin(kx * resolution_m, ky * resolution_m);
-  const int width = static_cast<int>(std::ceil((bounds.max.x() - origin.x()) / resolution_m));
-  const int height = static_cast<int>(std::ceil((bounds.max.y() - origin.y()) / resolution_m));
+  const double w = std::ceil((bounds.max.x() - origin.x()) / resolution_m);
+  const double h = std::ceil((bounds.max.y() - origin.y()) / resolution_m);
+  // Lattice indices are ints: beyond them (or with a non-finite pose) no map
+  // can be made at this resolution.
+  constexpr double kMaxIndex = 1 << 30;
+  if (!(std::abs(kx) < kMaxIndex && std::abs(ky) < kMaxIndex && w < kMaxIndex && h < kMaxIndex)) {
+    throw std::length_error("fusing submaps: they span beyond " + std::to_string(1 << 30) +
+                            " cells of " + std::to_string(resolution_m) +
+                            " m or lie at a non-finite pose (has SLAM diverged?)");
+  }
+  const int width = static_cast<int>(w);
+  const int height = static_cast<int>(h);
   *lattice = {static_cast<int>(kx), static_cast<int>(ky), width, height};
   return MapLimits(resolution_m, origin, width, height);
 }
@@ -148,6 +173,27 @@ void AddSubmap(const PlacedGrid& submap, double resolution_m, const LatticeRect&
 }
 
 }  // namespace fusion
+
+double ResolutionWithin(const std::vector<PlacedGrid>& submaps, double resolution_m,
+                        int64_t max_cells) {
+  if (!(resolution_m > 0.0) || max_cells < 1) {
+    throw std::invalid_argument("ResolutionWithin: resolution and max_cells must be positive");
+  }
+  const geometry::Box2d bounds = SubmapBounds(submaps);
+  if (bounds.empty()) return resolution_m;
+  if (!bounds.min.allFinite() || !bounds.max.allFinite()) {
+    throw std::length_error("fusing submaps: a submap lies at a non-finite pose");
+  }
+  // As FusedLimits counts them, in doubles: the count may be far beyond ints.
+  const auto cells = [&](double r) {
+    const double w = std::ceil((bounds.max.x() - std::floor(bounds.min.x() / r) * r) / r);
+    const double h = std::ceil((bounds.max.y() - std::floor(bounds.min.y() / r) * r) / r);
+    return w * h;
+  };
+  double r = resolution_m;
+  while (cells(r) > static_cast<double>(max_cells)) r *= 2.0;
+  return r;
+}
 
 OccupancyMap FuseSubmaps(const std::vector<PlacedGrid>& submaps, double resolution_m) {
   OccupancyMap fused;

@@ -27,7 +27,19 @@ struct PlacedGrid {
 // contribution to it is computed from (i, j) alone. So a cell's value does not
 // depend on the other submaps, which lets IncrementalSubmapFusion reuse sums.
 // A centre on a submap cell edge (up to rounding) reads the cell above it.
+// Throws std::length_error (naming the size) instead of allocating a map of
+// more than kMaxFusedCells cells, which only submaps thrown kilometres apart
+// by a diverged SLAM need.
 OccupancyMap FuseSubmaps(const std::vector<PlacedGrid>& submaps, double resolution_m);
+
+// 2^30 cells: 6 GB of sums while fusing; a 1.6 km square at 5 cm.
+inline constexpr int64_t kMaxFusedCells = int64_t{1} << 30;
+
+// Returns 'resolution_m' doubled as often as needed (none: 'resolution_m'
+// itself) for the fused map of 'submaps' to have at most 'max_cells' cells.
+// Throws std::length_error when a submap lies at a non-finite pose.
+double ResolutionWithin(const std::vector<PlacedGrid>& submaps, double resolution_m,
+                        int64_t max_cells);
 
 // The building blocks FuseSubmaps and IncrementalSubmapFusion share, so that
 // both compute every cell with the very same floating-point operations.

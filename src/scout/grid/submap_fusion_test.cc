@@ -4,7 +4,11 @@
 #include <rapidcheck/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "scout/geometry/box.h"
 #include "scout/grid/fusion_test_poses.h"
@@ -34,6 +38,38 @@ TEST(FuseSubmaps, UnknownWhereNoSubmapKnowsAndLogOddsVoteElsewhere) {
   EXPECT_EQ(fused.at({7, 5}), CellState::kFree);       // logit(0.2) + logit(0.6) < 0
   EXPECT_EQ(fused.at({12, 5}), CellState::kOccupied);  // logit(0.6) + logit(0.45) > 0
   EXPECT_EQ(fused.at({17, 5}), CellState::kFree);      // only free_b
+}
+
+// A 1 m and a 200 m submap 60 km apart, as a diverged SLAM places them:
+// 3.6e11 cells at 0.1 m. The fusion refuses by name instead of allocating; a
+// coarser resolution found by ResolutionWithin fuses them.
+TEST(FuseSubmaps, SubmapsFarApartAreRefusedOrFusedCoarser) {
+  const ProbabilityGrid a = Uniform(10, 0.2f);
+  const ProbabilityGrid b = Uniform(2000, 0.6f);
+  const std::vector<PlacedGrid> placed = {{&a, geometry::Rigid2d()},
+                                          {&b, geometry::Rigid2d(60000.0, 60000.0, 0.0)}};
+  try {
+    FuseSubmaps(placed, 0.1);
+    FAIL() << "expected std::length_error";
+  } catch (const std::length_error& e) {
+    EXPECT_NE(std::string(e.what()).find("has SLAM diverged?"), std::string::npos) << e.what();
+  }
+  const int64_t max_cells = int64_t{1} << 20;
+  const double r = ResolutionWithin(placed, 0.1, max_cells);
+  EXPECT_DOUBLE_EQ(r, 0.1 * 1024);  // 60200 m / 102.4 m = 588 cells a side; 51.2 m: 1176
+  const OccupancyMap fused = FuseSubmaps(placed, r);
+  EXPECT_LE(fused.limits.num_cells(), max_cells);
+  EXPECT_EQ(fused.limits.resolution(), r);
+  // The cell of (60100, 60100) m has its centre (60057.6, 60057.6) m in b.
+  EXPECT_EQ(fused.at(fused.limits.CellContaining({60100, 60100})), CellState::kOccupied);
+  // Within the limit the resolution is kept.
+  EXPECT_EQ(ResolutionWithin({{&a, geometry::Rigid2d()}}, 0.1, max_cells), 0.1);
+  EXPECT_EQ(ResolutionWithin({}, 0.1, max_cells), 0.1);
+  EXPECT_THROW(
+      ResolutionWithin({{&a, geometry::Rigid2d(std::numeric_limits<double>::infinity(), 0, 0)}},
+                       0.1, max_cells),
+      std::length_error);
+  EXPECT_THROW(ResolutionWithin(placed, 0.0, max_cells), std::invalid_argument);
 }
 
 TEST(FuseSubmaps, RotatedSubmapLandsWhereItsPoseSays) {

@@ -330,9 +330,13 @@ void WriteCoveragePicture(const grid::OccupancyMap& world,
   grid::WriteImage(canvas.image(), path);
 }
 
-grid::OccupancyMap FuseGlobalSubmaps(const GlobalSubmaps& submaps) {
+double GlobalMapResolution(const GlobalSubmaps& submaps) {
   const std::vector<grid::PlacedGrid> placed = Placed(submaps);
-  return grid::FuseSubmaps(placed, FinestResolution(placed));
+  return grid::ResolutionWithin(placed, FinestResolution(placed), kMaxGlobalMapCells);
+}
+
+grid::OccupancyMap FuseGlobalSubmaps(const GlobalSubmaps& submaps) {
+  return grid::FuseSubmaps(Placed(submaps), GlobalMapResolution(submaps));
 }
 
 void WriteMapServerMap(const GlobalSubmaps& submaps, const std::filesystem::path& yaml_path) {

@@ -1,6 +1,7 @@
 #ifndef SCOUT_IO_MAP_PICTURE_H_
 #define SCOUT_IO_MAP_PICTURE_H_
 
+#include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <utility>
@@ -69,9 +70,17 @@ void WriteCoveragePicture(const grid::OccupancyMap& world,
                           const std::vector<StampedPose>& truth, const std::filesystem::path& path,
                           int max_side_px = 3000);
 
-// Returns the submaps fused by grid::FuseSubmaps at the finest submap
-// resolution (0.05 m without submaps): the map WriteMapServerMap writes; no
-// cells when nothing is mapped.
+// At most this many cells in the map WriteMapServerMap writes: an 820 m
+// square at 5 cm. Only submaps a diverged SLAM has thrown far apart need more.
+inline constexpr int64_t kMaxGlobalMapCells = int64_t{1} << 28;
+
+// Returns the resolution of the map WriteMapServerMap writes: the finest
+// submap resolution (0.05 m without submaps), doubled as often as needed to
+// keep the map within kMaxGlobalMapCells.
+double GlobalMapResolution(const GlobalSubmaps& submaps);
+
+// Returns the submaps fused by grid::FuseSubmaps at GlobalMapResolution: the
+// map WriteMapServerMap writes; no cells when nothing is mapped.
 grid::OccupancyMap FuseGlobalSubmaps(const GlobalSubmaps& submaps);
 
 // Writes the fused submaps at the finest submap resolution as a ROS

@@ -214,5 +214,27 @@ TEST(WriteMapServerMap, WritesTheFusedMapAtSubmapResolution) {
   EXPECT_EQ(empty.cells[0], grid::CellState::kUnknown);
 }
 
+// Two submaps 40 km apart (a SLAM that diverged): at 0.125 m the map would
+// have 1e11 cells. It is written at the submap resolution doubled until it
+// has at most kMaxGlobalMapCells, and still shows where the submaps lie.
+TEST(WriteMapServerMap, SubmapsFarApartAreWrittenCoarser) {
+  const grid::TestTempDirectory dir;
+  const GlobalSubmaps submaps = {{geometry::Rigid2d(1.0, 2.0, 0.0), HalfKnownSubmap()},
+                                 {geometry::Rigid2d(39990.0, -39995.0, 0.0), HalfKnownSubmap()}};
+  const double resolution = GlobalMapResolution(submaps);
+  // 4 m: 10000 x 10001 cells; 2 m: 20000 x 20002, beyond 2^28.
+  EXPECT_DOUBLE_EQ(resolution, 0.125 * 32);
+  const auto yaml = dir.path() / "map.yaml";
+  WriteMapServerMap(submaps, yaml);
+  const grid::OccupancyMap read = grid::ReadMapServerMap(yaml);
+  EXPECT_DOUBLE_EQ(read.limits.resolution(), resolution);
+  EXPECT_LE(read.limits.num_cells(), kMaxGlobalMapCells);
+  // The 4 m cell [39992, 39996) x [-39992, -39988) has its centre 4 m and 5 m
+  // into the far submap, in its free half.
+  EXPECT_EQ(read.at(read.limits.CellContaining({39993.0, -39991.0})), grid::CellState::kFree);
+  // One submap alone keeps its resolution.
+  EXPECT_EQ(GlobalMapResolution({submaps[0]}), 0.125);
+}
+
 }  // namespace
 }  // namespace scout::io
