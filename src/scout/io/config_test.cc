@@ -41,6 +41,7 @@ TEST_F(ConfigTest, SlamSectionOfTheDefaultFileMatchesTheBuiltInDefaults) {
             d.local.adaptive_voxel_filter.min_num_points);
   EXPECT_EQ(c.local.use_online_correlative_scan_matching,
             d.local.use_online_correlative_scan_matching);
+  EXPECT_EQ(c.local.use_odometry, d.local.use_odometry);
   EXPECT_NEAR(c.local.real_time_correlative_scan_matcher.angular_search_window_rad,
               d.local.real_time_correlative_scan_matcher.angular_search_window_rad, 1e-12);
   EXPECT_DOUBLE_EQ(c.local.ceres_scan_matcher.occupied_space_weight,
@@ -103,6 +104,8 @@ TEST_F(ConfigTest, SlamValuesOverrideDefaultsAndErrorsNameTheKey) {
       LoadConfig(Write("slam:\n  local:\n    submaps:\n      num_range_data: 150\n"
                        "    motion_filter:\n      max_angle_deg: 2\n"));
   EXPECT_EQ(c.slam.local.submaps.num_range_data, 150);
+  EXPECT_FALSE(
+      LoadConfig(Write("slam:\n  local:\n    use_odometry: false\n")).slam.local.use_odometry);
   EXPECT_NEAR(c.slam.local.motion_filter.max_angle_rad, 2.0 * M_PI / 180.0, 1e-12);
   std::string e = ErrorOf("slam:\n  pose_graph:\n    constraint_builder:\n      min_scor: 0.6\n");
   EXPECT_NE(e.find("slam.pose_graph.constraint_builder.min_scor"), std::string::npos) << e;

@@ -56,6 +56,7 @@ void ReadLocal(YamlSection s, slam::LocalSlamOptions* o) {
   s.ReadPositive("voxel_filter_size_m", &o->voxel_filter_size_m);
   ReadAdaptiveVoxelFilter(s.Section("adaptive_voxel_filter"), &o->adaptive_voxel_filter);
   s.ReadBool("use_online_correlative_scan_matching", &o->use_online_correlative_scan_matching);
+  s.ReadBool("use_odometry", &o->use_odometry);
   {
     YamlSection c = s.Section("real_time_correlative_scan_matcher");
     slam::RealTimeCorrelativeScanMatcherOptions& m = o->real_time_correlative_scan_matcher;

@@ -49,6 +49,7 @@ LocalTrajectoryBuilder::LocalTrajectoryBuilder(const LocalSlamOptions& options)
       active_submaps_(options.submaps) {}
 
 void LocalTrajectoryBuilder::AddOdometry(const sensor::Odometry& odometry) {
+  if (!options_.use_odometry) return;
   extrapolator_.AddOdometry(odometry);
 }
 

@@ -34,6 +34,10 @@ struct LocalSlamOptions {
   // because logs with poor odometry need it (the extrapolation alone can be
   // several cells off, beyond the reach of the local optimiser).
   bool use_online_correlative_scan_matching = true;
+  // false: odometry messages are ignored (Cartographer's use_odometry), and
+  // the pose is predicted from the matched poses alone, for logs whose
+  // odometry misleads more than it helps.
+  bool use_odometry = true;
   RealTimeCorrelativeScanMatcherOptions real_time_correlative_scan_matcher;
   // Priors 1 / 1 instead of Cartographer's 10 / 40: the priors pull toward
   // the correlative result, which is only cell- and step-accurate, and at 10 /

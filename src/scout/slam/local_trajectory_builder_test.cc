@@ -140,6 +140,20 @@ TEST(LocalTrajectoryBuilderTest, TracksTrajectoryWithoutOdometry) {
   EXPECT_LT(run.max_angle_error_rad, 0.03);
 }
 
+// use_odometry = false: the odometry fed is ignored, so the lap is the lap
+// without odometry, pose for pose.
+TEST(LocalTrajectoryBuilderTest, IgnoresOdometryWhenToldTo) {
+  LocalSlamOptions ignoring = SmallSubmaps();
+  ignoring.use_odometry = false;
+  const RunResult fed = RunLap(ignoring, /*use_odometry=*/true);
+  const RunResult without = RunLap(SmallSubmaps(), /*use_odometry=*/false);
+  EXPECT_EQ(fed.max_error_m, without.max_error_m);
+  EXPECT_EQ(fed.max_angle_error_rad, without.max_angle_error_rad);
+  EXPECT_EQ(fed.num_inserted, without.num_inserted);
+  const RunResult used = RunLap(SmallSubmaps(), /*use_odometry=*/true);
+  EXPECT_NE(used.max_error_m, without.max_error_m);
+}
+
 // Drives 16 m down a featureless corridor 2 m wide at 0.5 m/s with perfect
 // odometry and a forward 180-degree, 8 m lidar of 'beams' beams (the
 // simulated robot's), with the explore loop's local SLAM settings (odometry

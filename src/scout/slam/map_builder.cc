@@ -32,6 +32,8 @@ MapBuilder::~MapBuilder() {
 }
 
 void MapBuilder::AddOdometry(const sensor::Odometry& odometry) {
+  // Ignored odometry also gives no odometry constraints.
+  if (!options_.local.use_odometry) return;
   local_.AddOdometry(odometry);
   odometry_.AddOdometry(odometry);
 }
