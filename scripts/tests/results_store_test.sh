@@ -72,6 +72,16 @@ rm "$OUT/explore-b/build.txt"
 store_finished explore-b
 [[ ! -e $STORE/explore-b ]] || fail "a run without build.txt was stored"
 
+# The data's path is spelt relative to the repository however DATA is given, so a stored run's
+# command matches on a clean checkout; a symbolic link is kept as spelt.
+[[ $(canonical_data_path ../shared/data) == ../shared/data ]] || fail "relative DATA respelt"
+[[ $(canonical_data_path "$PWD/../shared/data") == ../shared/data ]] ||
+  fail "absolute DATA not spelt relative: $(canonical_data_path "$PWD/../shared/data")"
+[[ $(canonical_data_path "$PWD/../shared//data/") == ../shared/data ]] || fail "DATA not normalised"
+mkdir -p "$TMP/data"
+ln -s "$TMP/data" "$TMP/link"
+[[ $(canonical_data_path "$TMP/link") == */link ]] || fail "a link to the data was resolved"
+
 # --jobs takes a positive number of runs; anything else stops before a run starts.
 for bad in 0 -1 two ''; do
   status=0
