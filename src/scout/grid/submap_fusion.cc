@@ -52,6 +52,19 @@ geometry::Box2d SubmapBounds(const std::vector<PlacedGrid>& submaps) {
   return bounds;
 }
 
+// The lattice cells covering 'bounds' at 'resolution_m', in doubles (the
+// counts may be far beyond ints): the first column and row, the columns and
+// rows.
+struct LatticeExtent {
+  double x0, y0, width, height;
+};
+LatticeExtent ExtentOf(const geometry::Box2d& bounds, double resolution_m) {
+  const double kx = std::floor(bounds.min.x() / resolution_m);
+  const double ky = std::floor(bounds.min.y() / resolution_m);
+  return {kx, ky, std::ceil((bounds.max.x() - kx * resolution_m) / resolution_m),
+          std::ceil((bounds.max.y() - ky * resolution_m) / resolution_m)};
+}
+
 }  // namespace
 
 namespace fusion {
@@ -103,23 +116,20 @@ MapLimits FusedLimits(const std::vector<PlacedGrid>& submaps, double resolution_
   const geometry::Box2d bounds = SubmapBounds(submaps);
   *lattice = {};
   if (bounds.empty()) return MapLimits();
-  const double kx = std::floor(bounds.min.x() / resolution_m);
-  const double ky = std::floor(bounds.min.y() / resolution_m);
-  const Eigen::Vector2d origin(kx * resolution_m, ky * resolution_m);
-  const double w = std::ceil((bounds.max.x() - origin.x()) / resolution_m);
-  const double h = std::ceil((bounds.max.y() - origin.y()) / resolution_m);
+  const LatticeExtent e = ExtentOf(bounds, resolution_m);
   // Lattice indices are ints: beyond them (or with a non-finite pose) no map
   // can be made at this resolution.
   constexpr double kMaxIndex = 1 << 30;
-  if (!(std::abs(kx) < kMaxIndex && std::abs(ky) < kMaxIndex && w < kMaxIndex && h < kMaxIndex)) {
+  if (!(std::abs(e.x0) < kMaxIndex && std::abs(e.y0) < kMaxIndex && e.width < kMaxIndex &&
+        e.height < kMaxIndex)) {
     throw std::length_error("fusing submaps: they span beyond " + std::to_string(1 << 30) +
                             " cells of " + std::to_string(resolution_m) +
                             " m or lie at a non-finite pose (has SLAM diverged?)");
   }
-  const int width = static_cast<int>(w);
-  const int height = static_cast<int>(h);
-  *lattice = {static_cast<int>(kx), static_cast<int>(ky), width, height};
-  return MapLimits(resolution_m, origin, width, height);
+  *lattice = {static_cast<int>(e.x0), static_cast<int>(e.y0), static_cast<int>(e.width),
+              static_cast<int>(e.height)};
+  return MapLimits(resolution_m, {e.x0 * resolution_m, e.y0 * resolution_m}, lattice->width,
+                   lattice->height);
 }
 
 void AddSubmap(const PlacedGrid& submap, double resolution_m, const LatticeRect& clip,
@@ -184,11 +194,9 @@ double ResolutionWithin(const std::vector<PlacedGrid>& submaps, double resolutio
   if (!bounds.min.allFinite() || !bounds.max.allFinite()) {
     throw std::length_error("fusing submaps: a submap lies at a non-finite pose");
   }
-  // As FusedLimits counts them, in doubles: the count may be far beyond ints.
   const auto cells = [&](double r) {
-    const double w = std::ceil((bounds.max.x() - std::floor(bounds.min.x() / r) * r) / r);
-    const double h = std::ceil((bounds.max.y() - std::floor(bounds.min.y() / r) * r) / r);
-    return w * h;
+    const LatticeExtent e = ExtentOf(bounds, r);
+    return e.width * e.height;
   };
   double r = resolution_m;
   while (cells(r) > static_cast<double>(max_cells)) r *= 2.0;
