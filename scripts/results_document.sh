@@ -58,7 +58,6 @@ unless_being_made() {
   exec {lock_fd}>&-
 }
 
-# restore_run NAME: when $OUT/NAME has no finished run, copies the stored one there.
 # canonical_data_path PATH: PATH relative to the repository (../shared/data on the usual layout).
 # Runs are kept when their command is unchanged, so the data's path is always spelt the same
 # way, however DATA was given: otherwise the stored runs made with DATA=/abs/path would all be
@@ -68,6 +67,7 @@ canonical_data_path() {
   realpath -m -s --relative-to=. "$1"
 }
 
+# restore_run NAME: when $OUT/NAME has no finished run, copies the stored one there.
 restore_run() {
   local name=$1
   [[ -n $STORE && -f $STORE/$name/summary.json && -f $STORE/$name/command.txt ]] || return 0
