@@ -7,6 +7,9 @@
 #include <sys/wait.h>
 
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 
 namespace scout::testing {
@@ -25,6 +28,12 @@ inline CliResult RunShell(const std::string& command) {
   const int status = pipe != nullptr ? pclose(pipe) : -1;
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return r;
+}
+
+// Returns a file's whole content ("" if it cannot be read).
+inline std::string ReadFile(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 inline CliResult RunScout(const std::string& args) {

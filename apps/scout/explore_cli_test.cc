@@ -21,12 +21,8 @@ namespace fs = std::filesystem;
 using scout::grid::CellState;
 
 using Result = scout::testing::CliResult;
+using scout::testing::ReadFile;
 using scout::testing::RunScout;
-
-std::string ReadFile(const fs::path& path) {
-  std::ifstream in(path);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
 
 // Writes a map_server map 'name'.yaml: walls everywhere except the cells whose
 // centres lie in one of the free boxes {x0, y0, x1, y1} (metres).

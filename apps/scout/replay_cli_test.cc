@@ -22,14 +22,8 @@ namespace fs = std::filesystem;
 using scout::geometry::Rigid2d;
 
 using Result = scout::testing::CliResult;
+using scout::testing::ReadFile;
 using scout::testing::RunScout;
-
-std::string ReadFile(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 // Writes a CARMEN log of one and a half laps of the corridor loop: a 180-beam,
 // 1-degree FLASER scan every 0.2 m carrying the true pose and the odometry
