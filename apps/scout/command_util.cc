@@ -144,13 +144,14 @@ void RejectEmptyValues(const CLI::App& command) {
 }
 
 Eigen::Vector2d ParsePoint(const std::string& text, const std::string& option) {
+  static_assert(kMaxInputCoordinateM == 1e6, "the message below names the limit");
   std::istringstream in(text);
   double x = 0.0, y = 0.0;
   char comma = 0;
   if (!(in >> x >> comma >> y) || comma != ',' || !(in >> std::ws).eof() ||
       !(std::abs(x) <= kMaxInputCoordinateM) || !(std::abs(y) <= kMaxInputCoordinateM)) {
-    throw InputError(option + " '" + text + "': expected X,Y in metres, e.g. " + option +
-                     " 2.5,-1");
+    throw InputError(option + " '" + text + "': expected X,Y in metres, each within +-1e6, e.g. " +
+                     option + " 2.5,-1");
   }
   return {x, y};
 }

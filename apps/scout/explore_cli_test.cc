@@ -74,6 +74,10 @@ TEST_F(ExploreCli, BadInputsNameWhatIsWrongAndLeaveNoOutputs) {
   r = RunScout("explore --start 1:2" + rooms + o);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find("expected X,Y"), std::string::npos) << r.output;
+  r = RunScout("explore --start 1e9,0" + rooms + o);  // a number, but no place on any map
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("'1e9,0': expected X,Y in metres, each within +-1e6"), std::string::npos)
+      << r.output;
   r = RunScout("explore --start ''" + rooms + o);  // given, but empty: not the default start
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find("--start: expected a value"), std::string::npos) << r.output;
