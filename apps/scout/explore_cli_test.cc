@@ -283,7 +283,7 @@ TEST_F(ExploreCli, ExploresASmallMapAndWritesEveryOutput) {
   EXPECT_EQ(status["collisions"], 0);
   EXPECT_EQ(status["goals"]["issued"], s["goals"]["issued"]);
   EXPECT_EQ(status["goals"]["reached"], s["goals"]["reached"]);
-  for (const char* counter : {"recoveries", "retraces", "guard_stops"}) {
+  for (const char* counter : {"recoveries", "retraces", "last_resorts", "guard_stops"}) {
     EXPECT_EQ(status["goals"][counter], s["goals"][counter]) << counter;
   }
   EXPECT_EQ(status["frontier_points"], 0);  // explored completely

@@ -172,6 +172,7 @@ nlohmann::json Summary(const ExploreArgs& args, const exploration::ExplorationLo
                 {"stuck_reselections", r.counters.stuck_reselections},
                 {"back_ups_blocked", r.counters.back_ups_blocked},
                 {"retraces", r.counters.retraces},
+                {"last_resorts", r.counters.last_resorts},
                 {"guard_stops", r.counters.guard_stops},
                 {"guard_steers", r.counters.guard_steers},
                 // null: not counted, the goal manager had not finished.

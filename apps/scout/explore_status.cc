@@ -102,6 +102,7 @@ nlohmann::ordered_json ExploreStatusFile::ToJson(
                      // A robot that struggles shows here before goals fail.
                      {"recoveries", p.counters.recoveries},
                      {"retraces", p.counters.retraces},
+                     {"last_resorts", p.counters.last_resorts},
                      {"guard_stops", p.counters.guard_stops}};
   nlohmann::ordered_json blacklisted = nlohmann::ordered_json::array();
   for (const Eigen::Vector2d& b : p.blacklisted_goals) blacklisted.push_back(PointJson(b));

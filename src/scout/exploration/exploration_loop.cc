@@ -369,10 +369,26 @@ std::optional<Termination> ExplorationLoop::CheckTermination(
                : Termination::kComplete;
   }
   if (t >= options_.explore.max_sim_time_s) return Termination::kMaxSimTime;
-  if (t - map_progress_.last_progress_s() >= options_.explore.no_progress_timeout_s) {
+  if (t - NoProgressSince() >= options_.explore.no_progress_timeout_s) {
     return Termination::kNoProgress;
   }
   return std::nullopt;
+}
+
+double ExplorationLoop::NoProgressSince() const {
+  return std::max(map_progress_.last_progress_s(), last_resort_s_);
+}
+
+bool ExplorationLoop::Confined(double sim_time_s) const {
+  const explore::GoalManagerOptions& g = options_.explore.goals;
+  if (g.last_resort_retrace_m <= 0.0 || sim_time_s < g.last_resort_confined_s) return false;
+  const Eigen::Vector2d here = EstimatedPose().translation();
+  const std::vector<slam::TimedPose> nodes = builder_->GetTrajectory();
+  for (auto it = nodes.rbegin();
+       it != nodes.rend() && it->time_s >= sim_time_s - g.last_resort_confined_s; ++it) {
+    if ((it->pose.translation() - here).norm() > g.last_resort_confined_radius_m) return false;
+  }
+  return true;
 }
 
 ExplorationProgress ExplorationLoop::MakeProgress(double sim_time_s,
@@ -453,6 +469,11 @@ ExplorationResult ExplorationLoop::Run(const ProgressCallback& progress, double 
       in.driven = &driven_;
       const frontier::Stopwatch watch;
       status = goals_.Update(in);
+      // About to end no_progress: a confined robot first tries its last resort.
+      if (t - NoProgressSince() >= e.no_progress_timeout_s && Confined(t) &&
+          goals_.LastResort(in)) {
+        last_resort_s_ = t;
+      }
       result_.timings.goals_s += watch.ElapsedUs() * 1e-6;
       if (goals_.counters().goals_issued > issued_before && status.goal && status.target) {
         RecordIssuedGoal(*status.goal, *status.target, status.path);

@@ -250,6 +250,13 @@ class ExplorationLoop {
   void RecordIssuedGoal(const Eigen::Vector2d& goal_map, const Eigen::Vector2d& target_map,
                         const std::vector<Eigen::Vector2d>& path_map);
   std::optional<Termination> CheckTermination(const explore::ExploreStatus& status) const;
+  // When the no-progress clock started: the map's last progress, or the
+  // goal manager's last resort after it.
+  double NoProgressSince() const;
+  // True when every SLAM node of the last last_resort_confined_s lies within
+  // last_resort_confined_radius_m of the estimated pose (and the run is that
+  // old): the robot has not got anywhere (GoalManagerOptions::last_resort_*).
+  bool Confined(double sim_time_s) const;
 
   const ExplorationOptions options_;
   sim::World world_;
@@ -294,6 +301,7 @@ class ExplorationLoop {
   ScanRecorder scan_recorder_;
   ExplorationResult result_;
   MapProgress map_progress_;
+  double last_resort_s_ = -1e300;
 
   // The coverage measurement in flight. Declared last: destroyed (joined)
   // first, while the ground truth it reads still exists.

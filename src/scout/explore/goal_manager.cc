@@ -33,6 +33,10 @@ void Validate(const GoalManagerOptions& o) {
   CheckAtLeast(g, "back_up_trail_tolerance_m", o.back_up_trail_tolerance_m, 0.0);
   CheckAtLeast(g, "retrace_m", o.retrace_m, 0.0);
   CheckAtLeast(g, "retrace_clearance_m", o.retrace_clearance_m, 0.0);
+  CheckAtLeast(g, "last_resort_retrace_m", o.last_resort_retrace_m, 0.0);
+  CheckAtLeast(g, "last_resort_confined_radius_m", o.last_resort_confined_radius_m, 0.0);
+  CheckAtLeast(g, "last_resort_confined_s", o.last_resort_confined_s, 0.0);
+  CheckAtLeast(g, "max_last_resorts", o.max_last_resorts, 0.0);
   CheckAtLeast(g, "close_stuck_passage_radius_m", o.close_stuck_passage_radius_m, 0.0);
   CheckAtLeast(g, "goal_frontier_radius_m", o.goal_frontier_radius_m, 0.0);
   CheckAtLeast(g, "goal_switch_margin", o.goal_switch_margin, 0.0);
@@ -521,6 +525,7 @@ bool GoalManager::OffTrail(const geometry::Rigid2d& pose) const {
 
 void GoalManager::EndStuckGoal(const ExploreInput& in) {
   if (state_ == ExploreState::kReturning) return FailGoal(in);
+  if (!goal_) return EndGoal(ExploreState::kPlanning);  // a last resort's drive back
   std::vector<Eigen::Vector2d> stuck_before;
   for (const AnchoredPoint& p : stuck_goals_) stuck_before.push_back(Resolve(p, in.submaps));
   if (failed_.IsNear(Resolve(*goal_, in.submaps), stuck_before)) return FailGoal(in);
@@ -630,6 +635,29 @@ bool GoalManager::StartRetrace(const ExploreInput& in) {
   retracing_since_ = {in.time_s, in.robot_pose.translation()};
   // The goal's path is given up; the goal ends when the retrace does.
   follower_.SetPath(retrace_trail_.Reversed(in.robot_pose.translation()));
+  return true;
+}
+
+bool GoalManager::LastResort(const ExploreInput& in) {
+  if (options_.last_resort_retrace_m <= 0.0 ||
+      counters_.last_resorts >= options_.max_last_resorts || !in.driven ||
+      (state_ != ExploreState::kPlanning && state_ != ExploreState::kDriving) ||
+      backing_up_since_ || retracing_since_) {
+    return false;
+  }
+  const Eigen::Vector2d here = in.robot_pose.translation();
+  std::vector<Eigen::Vector2d> way = WayBack(*in.driven, here, options_.last_resort_retrace_m);
+  if (way.empty()) return false;
+  ++counters_.last_resorts;
+  // The goal it could not reach in all that time fails; the drive back ends
+  // as a retrace does, with a selection afresh (EndStuckGoal without a goal).
+  if (goal_ && map_) {
+    ++counters_.goals_failed;
+    failed_.RecordFailure(Resolve(*goal_, in.submaps), in.submaps, *map_);
+  }
+  EndGoal(ExploreState::kDriving);
+  retracing_since_ = {in.time_s, here};
+  follower_.SetPath(std::move(way));
   return true;
 }
 

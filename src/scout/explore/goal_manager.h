@@ -111,6 +111,24 @@ struct GoalManagerOptions {
   // did not leave office seed 13's pocket, a few mm closer to a corner on
   // the way out than it had been on the way in.
   double retrace_clearance_m = 0.01;
+  // The last resort before a run ends no_progress while the robot is
+  // confined (ExplorationLoop: its map has not grown for the no-progress
+  // timeout, and its estimated poses of the last last_resort_confined_s all
+  // lie within last_resort_confined_radius_m of where it stands): the goal it
+  // has fails, it drives back the way it came (its SLAM trajectory, loops
+  // erased: WayBack) until it stands last_resort_retrace_m away in a straight
+  // line, as a retrace (clearance retrace_clearance_m), closes the passage
+  // behind it as after a back-up, and selects afresh; the no-progress clock
+  // starts again. At most max_last_resorts times per run. A run that never
+  // meets that condition is not changed by it: every stored evaluation run
+  // ended complete, at max_sim_time, or no_progress for want of goals or
+  // while moving about. Office seed 13 stood in a pocket between a desk and a
+  // wall from 820 s and ended no_progress at 0.869; with this it leaves at
+  // 1300 s (docs/EXPERIMENTS.md). 0: off.
+  double last_resort_retrace_m = 2.0;
+  double last_resort_confined_radius_m = 1.0;
+  double last_resort_confined_s = 60.0;
+  int max_last_resorts = 2;
   // Where the robot got stuck (the back-up began), the narrow-passage cells
   // within this radius (metres) are closed to planning; they reopen, as
   // failed goals do, when the map around them changes (failed_goals' retry
@@ -231,6 +249,7 @@ struct ExploreCounters {
   int stuck_reselections = 0;  // ... after which the goal was selected afresh, not failed
   int back_ups_blocked = 0;  // ... that stopped early (a mapped obstacle behind, or off the trail)
   int retraces = 0;          // ... that drove back the way it came instead (retrace_m)
+  int last_resorts = 0;      // drives back before no_progress (last_resort_retrace_m)
   int guard_stops = 0;       // the collision guard stopped a forward command
   int guard_steers = 0;      // control cycles it steered another arc instead
 };
@@ -282,6 +301,12 @@ class GoalManager {
 
   // Advances the state machine and returns the command for this cycle.
   ExploreStatus Update(const ExploreInput& input);
+  // The last resort (GoalManagerOptions::last_resort_retrace_m), for a robot
+  // its caller found confined with no progress: true when the drive back
+  // began (input.driven holds the way); false when it is off, used up, the
+  // robot is not exploring, already recovering, or no driven point is that
+  // far away.
+  bool LastResort(const ExploreInput& input);
 
   ExploreState state() const { return state_; }
   const ExploreCounters& counters() const { return counters_; }

@@ -504,6 +504,78 @@ TEST(GoalManagerTest, StuckAgainWhereTheBackUpBeganRetracesTheWayItCame) {
   EXPECT_GE(s.command.linear_mps, 0.0);
 }
 
+// The loop found the robot confined with no progress: the goal fails and the
+// robot drives back the way it came (its trajectory, not a trail of its own),
+// then selects afresh; at most max_last_resorts times, never when off, idle,
+// or with no driven point far enough away.
+TEST(GoalManagerTest, LastResortDrivesBackTheWayItCameThenSelectsAfresh) {
+  Room room;  // 0.1 m cells: At(10, 20) is (1.05, 2.05)
+  const Eigen::Vector2d from = room.b.At(10, 20), stuck_at = room.b.At(35, 20);
+  std::vector<Eigen::Vector2d> driven;
+  for (double f = 0.0; f <= 1.0 + 1e-9; f += 0.05) driven.push_back(from + f * (stuck_at - from));
+  for (int k = 0; k < 200; ++k) driven.push_back(stuck_at);  // turning on the spot
+  const auto input = [&](double t, const Eigen::Vector2d& at, double heading) {
+    ExploreInput in = room.Input(t, at, false);
+    in.robot_pose = geometry::Rigid2d(at, heading);
+    in.driven = &driven;
+    return in;
+  };
+  {
+    GoalManagerOptions o = NoStuckRecovery();
+    o.last_resort_retrace_m = 0.0;
+    GoalManager off = MakeManager(o);
+    off.Start();
+    off.Update(room.Input(0.0, stuck_at, true));
+    EXPECT_FALSE(off.LastResort(input(0.1, stuck_at, 0.0)));
+  }
+  GoalManager gm = MakeManager();  // on by default: 2 m, twice
+  EXPECT_FALSE(gm.LastResort(input(0.0, stuck_at, 0.0))) << "idle";
+  gm.Start();
+  double t = 0.0;
+  ExploreStatus s = gm.Update(room.Input(t, stuck_at, true));
+  ASSERT_EQ(s.state, ExploreState::kDriving);
+  ASSERT_TRUE(s.goal.has_value());
+  std::vector<Eigen::Vector2d> nothing_far{stuck_at, stuck_at + Eigen::Vector2d(0.5, 0.0)};
+  ExploreInput short_way = input(t += 0.1, stuck_at, 0.0);
+  short_way.driven = &nothing_far;
+  EXPECT_FALSE(gm.LastResort(short_way)) << "no driven point 2 m away";
+
+  ASSERT_TRUE(gm.LastResort(input(t += 0.1, stuck_at, 0.0)));
+  EXPECT_EQ(gm.counters().last_resorts, 1);
+  EXPECT_EQ(gm.counters().goals_failed, 1);
+  EXPECT_FALSE(gm.LastResort(input(t += 0.1, stuck_at, 0.0))) << "already driving back";
+  // Facing away from the way back: it turns on the spot first ...
+  s = gm.Update(input(t += 0.1, stuck_at, 0.0));
+  EXPECT_EQ(s.state, ExploreState::kDriving);
+  EXPECT_FALSE(s.goal.has_value());
+  EXPECT_EQ(s.command.linear_mps, 0.0);
+  EXPECT_NE(s.command.angular_radps, 0.0);
+  // ... then drives forward along the way it came until 2 m away.
+  Eigen::Vector2d robot = stuck_at;
+  for (int k = 0; k < 400 && s.state == ExploreState::kDriving; ++k) {
+    s = gm.Update(input(t += 0.1, robot, M_PI));
+    if (s.state != ExploreState::kDriving) break;
+    ASSERT_GT(s.command.linear_mps, 0.0) << k;
+    robot.x() -= 0.02;
+  }
+  EXPECT_EQ(s.state, ExploreState::kPlanning);
+  EXPECT_NEAR((stuck_at - robot).norm(), 2.0, 0.3);
+  EXPECT_NEAR(robot.y(), stuck_at.y(), 1e-9);
+  // Then it selects afresh.
+  s = gm.Update(input(t += 0.1, robot, M_PI));
+  EXPECT_EQ(s.state, ExploreState::kDriving);
+  EXPECT_TRUE(s.goal.has_value());
+  // Confined in the pocket again later: once more, then no more.
+  EXPECT_TRUE(gm.LastResort(input(t += 0.1, stuck_at, M_PI)));
+  EXPECT_EQ(gm.counters().last_resorts, 2);
+  for (int k = 0; k < 400 && s.state == ExploreState::kDriving; ++k) {
+    s = gm.Update(input(t += 0.1, stuck_at, 0.0));
+  }
+  s = gm.Update(input(t += 0.1, stuck_at, 0.0));
+  EXPECT_FALSE(gm.LastResort(input(t += 0.1, stuck_at, 0.0)));
+  EXPECT_EQ(gm.counters().last_resorts, 2);
+}
+
 // Stopped in the middle of a recovery, then started again: the robot drives
 // to its next goal instead of going on with the back-up or the retrace.
 TEST(GoalManagerTest, StopEndsARecoveryUnderWay) {

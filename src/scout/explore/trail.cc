@@ -1,5 +1,7 @@
 #include "scout/explore/trail.h"
 
+#include <algorithm>
+
 namespace scout::explore {
 
 void Trail::Record(const Eigen::Vector2d& position, double max_length_m) {
@@ -24,6 +26,25 @@ std::vector<Eigen::Vector2d> Trail::Reversed(const Eigen::Vector2d& from) const 
     if ((*it - path.back()).norm() >= kStep_m) path.push_back(*it);
   }
   return path;
+}
+
+std::vector<Eigen::Vector2d> WayBack(const std::vector<Eigen::Vector2d>& driven,
+                                     const Eigen::Vector2d& from, double distance_m) {
+  std::vector<Eigen::Vector2d> way{from};
+  const double tolerance2 = kLoopTolerance_m * kLoopTolerance_m;
+  for (auto it = driven.rbegin(); it != driven.rend(); ++it) {
+    // The way stays short while loops are erased, so the search is cheap.
+    const auto seen = std::find_if(way.begin(), way.end(), [&](const Eigen::Vector2d& p) {
+      return (*it - p).squaredNorm() <= tolerance2;
+    });
+    if (seen != way.end()) {
+      way.erase(seen + 1, way.end());
+      continue;
+    }
+    way.push_back(*it);
+    if ((*it - from).norm() >= distance_m) return way;
+  }
+  return {};
 }
 
 }  // namespace scout::explore

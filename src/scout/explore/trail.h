@@ -34,6 +34,19 @@ class Trail {
   double length_m_ = 0.0;
 };
 
+// The way back along the positions the robot drove ('driven', oldest first,
+// e.g. the SLAM trajectory in the current global frame): starts at 'from' and
+// follows 'driven' backwards from its newest point until a point at least
+// 'distance_m' from 'from' in a straight line, which ends it. Loops are erased:
+// where the way comes back within kLoopTolerance_m of a point it already holds,
+// the stretch after that point is dropped, so turning on the spot and creeping
+// a few cm to and fro in one place (hundreds of nodes) leaves only the way in.
+// No two points of the way lie within kLoopTolerance_m of each other. Empty
+// when no driven point is that far from 'from'.
+inline constexpr double kLoopTolerance_m = 0.1;
+std::vector<Eigen::Vector2d> WayBack(const std::vector<Eigen::Vector2d>& driven,
+                                     const Eigen::Vector2d& from, double distance_m);
+
 }  // namespace scout::explore
 
 #endif  // SCOUT_EXPLORE_TRAIL_H_

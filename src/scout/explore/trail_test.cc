@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace scout::explore {
 namespace {
 
@@ -39,6 +41,66 @@ TEST(TrailTest, ReversedRunsFromTheRobotBackToTheOldestPoint) {
   EXPECT_EQ(back.back(), Eigen::Vector2d(0.0, 0.0));
   // Where the robot stands on the newest point, that point is not repeated.
   EXPECT_EQ(trail.Reversed({1.0, 0.5}).size(), trail.points().size());
+}
+
+TEST(WayBackTest, FollowsTheDrivenWayBackUntilFarEnoughInAStraightLine) {
+  // Driven east along y = 0 for 4 m, then north 1 m: the robot stands at (4, 1.1).
+  std::vector<Eigen::Vector2d> driven;
+  for (int k = 0; k <= 20; ++k) driven.emplace_back(0.2 * k, 0.0);
+  for (int k = 1; k <= 5; ++k) driven.emplace_back(4.0, 0.2 * k);
+  const Eigen::Vector2d robot(4.0, 1.15);
+  const std::vector<Eigen::Vector2d> way = WayBack(driven, robot, 2.0);
+  ASSERT_GE(way.size(), 3u);
+  EXPECT_EQ(way.front(), robot);
+  EXPECT_EQ(way[1], driven[25]);  // (4, 1): back down the way it came, not across
+  EXPECT_EQ(way[5], driven[21]);  // (4, 0.2)
+  // It ends at the first driven point 2 m away, (2.2, 0): 2.14 m ((2.4, 0): 1.97 m).
+  EXPECT_GE((way.back() - robot).norm(), 2.0);
+  EXPECT_EQ(way.back(), driven[11]);
+  for (size_t i = 0; i + 1 < way.size(); ++i) EXPECT_LT((way[i] - robot).norm(), 2.0) << i;
+  // Nothing driven that far: no way back.
+  EXPECT_TRUE(WayBack(driven, robot, 10.0).empty());
+  EXPECT_TRUE(WayBack({}, robot, 0.5).empty());
+}
+
+TEST(WayBackTest, ErasesTheLoopsOfTurningAndCreepingAboutInOnePlace) {
+  // In along x to (3, 0), then 600 nodes of turning on the spot and creeping
+  // a few cm to and fro (a pocket the robot could not leave), once 0.3 m out
+  // and back, ending 4 cm from where it came in.
+  std::vector<Eigen::Vector2d> driven;
+  for (int k = 0; k <= 15; ++k) driven.emplace_back(0.2 * k, 0.0);
+  const Eigen::Vector2d pocket(3.0, 0.0);
+  for (int k = 0; k < 600; ++k) {
+    const double a = 0.37 * k;
+    driven.push_back(pocket + 0.04 * std::abs(std::sin(0.05 * k)) *
+                                  Eigen::Vector2d(std::cos(a), std::sin(a)));
+    if (k == 300) {  // and once 0.3 m out and back again
+      for (const double y : {0.15, 0.3, 0.15}) driven.push_back(pocket + Eigen::Vector2d(0.0, y));
+    }
+  }
+  const Eigen::Vector2d robot = pocket + Eigen::Vector2d(0.0, 0.04);
+  const std::vector<Eigen::Vector2d> way = WayBack(driven, robot, 2.0);
+  ASSERT_FALSE(way.empty());
+  // The first point of the way in that lies 2 m away ends it.
+  Eigen::Vector2d first_far = Eigen::Vector2d::Zero();
+  for (int k = 15; k >= 0; --k) {
+    if ((Eigen::Vector2d(0.2 * k, 0.0) - robot).norm() >= 2.0) {
+      first_far = {0.2 * k, 0.0};
+      break;
+    }
+  }
+  EXPECT_EQ(way.back(), first_far);
+  // The pocket's hundreds of nodes are gone: the robot, at most one point of
+  // the pocket, and the way in back to (1, 0).
+  EXPECT_LE(way.size(), 2u + 11u);
+  for (size_t i = 0; i < way.size(); ++i) {
+    for (size_t j = i + 1; j < way.size(); ++j) {
+      EXPECT_GT((way[i] - way[j]).norm(), kLoopTolerance_m) << i << " " << j;
+    }
+  }
+  double length_m = 0.0;
+  for (size_t i = 0; i + 1 < way.size(); ++i) length_m += (way[i + 1] - way[i]).norm();
+  EXPECT_LT(length_m, (first_far - robot).norm() + 0.2);
 }
 
 }  // namespace

@@ -29,6 +29,11 @@ void ReadGoals(YamlSection s, explore::GoalManagerOptions* o) {
   s.ReadNonNegativeAtMost("back_up_trail_tolerance_m", &o->back_up_trail_tolerance_m, 10.0);
   s.ReadNonNegativeAtMost("retrace_m", &o->retrace_m, 100.0);
   s.ReadNonNegativeAtMost("retrace_clearance_m", &o->retrace_clearance_m, 1.0);
+  s.ReadNonNegativeAtMost("last_resort_retrace_m", &o->last_resort_retrace_m, 100.0);
+  s.ReadNonNegativeAtMost("last_resort_confined_radius_m", &o->last_resort_confined_radius_m,
+                          100.0);
+  s.ReadNonNegative("last_resort_confined_s", &o->last_resort_confined_s);
+  s.ReadInt("max_last_resorts", &o->max_last_resorts, 0);
   s.ReadNonNegativeAtMost("close_stuck_passage_radius_m", &o->close_stuck_passage_radius_m, 10.0);
   s.ReadNonNegativeAtMost("goal_frontier_radius_m", &o->goal_frontier_radius_m, 10.0);
   s.ReadNonNegative("goal_switch_margin", &o->goal_switch_margin);

@@ -45,6 +45,11 @@ TEST_F(ExploreConfigTest, DefaultFileMatchesTheBuiltInDefaults) {
                    d.explore.goals.stand_off_unknown_margin_m);
   EXPECT_DOUBLE_EQ(c.explore.goals.close_stuck_passage_radius_m,
                    d.explore.goals.close_stuck_passage_radius_m);
+  EXPECT_DOUBLE_EQ(c.explore.goals.last_resort_retrace_m, d.explore.goals.last_resort_retrace_m);
+  EXPECT_DOUBLE_EQ(c.explore.goals.last_resort_confined_radius_m,
+                   d.explore.goals.last_resort_confined_radius_m);
+  EXPECT_DOUBLE_EQ(c.explore.goals.last_resort_confined_s, d.explore.goals.last_resort_confined_s);
+  EXPECT_EQ(c.explore.goals.max_last_resorts, d.explore.goals.max_last_resorts);
   EXPECT_DOUBLE_EQ(c.explore.traversability.driven_width_m,
                    d.explore.traversability.driven_width_m);
   EXPECT_DOUBLE_EQ(c.explore.traversability.driven_max_gap_m,
@@ -82,7 +87,8 @@ TEST_F(ExploreConfigTest, ValuesAreReadWithTheirUnits) {
   const ScoutConfig c = Load(
       "explore:\n  max_sim_time_s: 120\n  initial_turn_deg: 90\n  goals:\n    return_to_start: "
       "true\n    scan_check_radius_m: 0.15\n    stand_off_unknown_margin_m: 0.25\n    "
-      "scan_check_memory_s: 8\n    guard:\n     "
+      "scan_check_memory_s: 8\n    last_resort_retrace_m: 3\n    last_resort_confined_radius_m: "
+      "0.5\n    last_resort_confined_s: 90\n    max_last_resorts: 0\n    guard:\n     "
       " predict_motion: true\n      "
       "stop_turn_radps: 0\n  follower:\n    "
       "rotate_in_place_heading_deg: "
@@ -93,6 +99,10 @@ TEST_F(ExploreConfigTest, ValuesAreReadWithTheirUnits) {
   EXPECT_DOUBLE_EQ(c.explore.goals.scan_check_radius_m, 0.15);
   EXPECT_DOUBLE_EQ(c.explore.goals.stand_off_unknown_margin_m, 0.25);
   EXPECT_DOUBLE_EQ(c.explore.goals.scan_check_memory_s, 8.0);
+  EXPECT_DOUBLE_EQ(c.explore.goals.last_resort_retrace_m, 3.0);
+  EXPECT_DOUBLE_EQ(c.explore.goals.last_resort_confined_radius_m, 0.5);
+  EXPECT_DOUBLE_EQ(c.explore.goals.last_resort_confined_s, 90.0);
+  EXPECT_EQ(c.explore.goals.max_last_resorts, 0);
   EXPECT_TRUE(c.explore.goals.guard.predict_motion);
   EXPECT_EQ(c.explore.goals.guard.stop_turn_radps, 0.0);
   EXPECT_NEAR(c.explore.follower.rotate_in_place_heading_rad, std::numbers::pi / 6, 1e-12);
@@ -138,6 +148,10 @@ TEST_F(ExploreConfigTest, ErrorsNameTheKey) {
   EXPECT_NE(ErrorOf("robot:\n  lidar:\n    beams: 1\n").find("robot.lidar.beams"),
             std::string::npos);
   // Range checks of the explore module come back as InputError naming the key.
+  const std::string resorts = ErrorOf("explore:\n  goals:\n    max_last_resorts: -1\n");
+  EXPECT_NE(resorts.find("explore.goals.max_last_resorts"), std::string::npos) << resorts;
+  const std::string resort_m = ErrorOf("explore:\n  goals:\n    last_resort_retrace_m: -2\n");
+  EXPECT_NE(resort_m.find("explore.goals.last_resort_retrace_m"), std::string::npos) << resort_m;
   const std::string hysteresis = ErrorOf("explore:\n  goals:\n    max_failures: -1\n");
   EXPECT_NE(hysteresis.find("max_failures"), std::string::npos) << hysteresis;
   const std::string follower = ErrorOf("explore:\n  follower:\n    min_linear_speed_mps: 0.9\n");
