@@ -159,6 +159,9 @@ EXPLORE_SCAN_CHECK_COMMIT=d13fac7
 # 9847fb7 (the scan check also uses the returns of the last 10 s of scans) changes the scout
 # policy's runs only, like d13fac7.
 EXPLORE_SCAN_MEMORY_COMMIT=9847fb7
+# ea2a217 (a confined robot's last resort, when the no-progress timer runs out) changes only runs
+# that ended no_progress by that timer ("frontier_left": null, the goals had not run out).
+EXPLORE_LAST_RESORT_COMMIT=ea2a217
 stale_runs() {
   local name f
   for name in "$@"; do
@@ -173,7 +176,9 @@ stale_runs() {
       { made_before "$EXPLORE_POLICY_COMMIT" "$name" &&
         grep -Eq '"goals_policy": *"(scout|meanshift-centres)"' "$f"; } ||
       { made_before "$EXPLORE_SCAN_MEMORY_COMMIT" "$name" &&
-        grep -Eq '"goals_policy": *"scout"' "$f"; }; then
+        grep -Eq '"goals_policy": *"scout"' "$f"; } ||
+      { made_before "$EXPLORE_LAST_RESORT_COMMIT" "$name" &&
+        grep -Eq '"terminated": *"no_progress"' "$f" && grep -Eq '"frontier_left": *null' "$f"; }; then
       printf '`%s` ' "$name"
     fi
   done
