@@ -132,6 +132,36 @@ TEST(ExplorationLoopTest, ARunThatCannotFinishEndsByItself) {
   EXPECT_LT(s.sim_time_s, 30.0);
 }
 
+// When the no-progress timer runs out on a confined robot, it first drives
+// back the way it came and the timer starts again, at most max_last_resorts
+// times; then the run ends no_progress. (No map growth ever counts here,
+// "confined" spans the whole small building, and the robot drives slowly.)
+TEST(ExplorationLoopTest, AConfinedRobotTriesItsLastResortsBeforeNoProgress) {
+  ExplorationOptions o;
+  o.explore.min_map_gain_m2 = 1e9;
+  o.explore.no_progress_timeout_s = 20.0;
+  o.explore.goals.last_resort_confined_radius_m = 100.0;
+  o.explore.goals.last_resort_confined_s = 1.0;
+  o.explore.goals.last_resort_retrace_m = 0.5;
+  o.explore.goals.max_last_resorts = 2;
+  o.explore.follower.max_linear_speed_mps = 0.1;  // slow enough not to finish within a minute
+  const ExplorationResult r = Explore(o, 1);
+  EXPECT_EQ(r.terminated, Termination::kNoProgress);
+  EXPECT_EQ(r.counters.last_resorts, 2);
+  EXPECT_GE(r.sim_time_s, 60.0);  // three timeouts
+  EXPECT_LT(r.sim_time_s, 65.0);
+  EXPECT_EQ(r.collisions, 0);
+
+  o.explore.goals.max_last_resorts = 0;  // none: it ends at the first timeout
+  const ExplorationResult none = Explore(o, 1);
+  EXPECT_EQ(none.terminated, Termination::kNoProgress);
+  EXPECT_EQ(none.counters.last_resorts, 0);
+  EXPECT_NEAR(none.sim_time_s, 20.0, 0.5);
+  o.explore.goals.max_last_resorts = 2;
+  o.explore.goals.last_resort_confined_radius_m = 0.01;  // it moved: not confined
+  EXPECT_EQ(Explore(o, 1).counters.last_resorts, 0);
+}
+
 TEST(ExplorationLoopTest, AStopRequestEndsTheRunMeasuredLikeAnyOther) {
   // A user's Ctrl-C: asked once, from 20 s of simulated time on.
   ExplorationLoop loop(testing::SmallBuilding(), {}, 7);
