@@ -379,16 +379,24 @@ double ExplorationLoop::NoProgressSince() const {
   return std::max(map_progress_.last_progress_s(), last_resort_s_);
 }
 
-bool ExplorationLoop::Confined(double sim_time_s) const {
+std::optional<Eigen::Vector2d> ExplorationLoop::ConfinedAt(double sim_time_s) const {
   const explore::GoalManagerOptions& g = options_.explore.goals;
-  if (g.last_resort_retrace_m <= 0.0 || sim_time_s < g.last_resort_confined_s) return false;
-  const Eigen::Vector2d here = EstimatedPose().translation();
+  if (g.last_resort_retrace_m <= 0.0) return std::nullopt;
   const std::vector<slam::TimedPose> nodes = builder_->GetTrajectory();
-  for (auto it = nodes.rbegin();
-       it != nodes.rend() && it->time_s >= sim_time_s - g.last_resort_confined_s; ++it) {
-    if ((it->pose.translation() - here).norm() > g.last_resort_confined_radius_m) return false;
+  const double window_start_s = sim_time_s - options_.explore.no_progress_timeout_s;
+  const double r2 = g.last_resort_confined_radius_m * g.last_resort_confined_radius_m;
+  // Newest first: each node of the window as the centre of a stretch of
+  // nodes before it within the radius. Hundreds of nodes, once per timeout.
+  for (size_t j = nodes.size(); j-- > 0 && nodes[j].time_s >= window_start_s;) {
+    const Eigen::Vector2d centre = nodes[j].pose.translation();
+    size_t i = j;
+    while (i > 0 && nodes[i - 1].time_s >= window_start_s &&
+           (nodes[i - 1].pose.translation() - centre).squaredNorm() <= r2) {
+      --i;
+    }
+    if (nodes[j].time_s - nodes[i].time_s >= g.last_resort_confined_s) return centre;
   }
-  return true;
+  return std::nullopt;
 }
 
 ExplorationProgress ExplorationLoop::MakeProgress(double sim_time_s,
@@ -469,10 +477,15 @@ ExplorationResult ExplorationLoop::Run(const ProgressCallback& progress, double 
       in.driven = &driven_;
       const frontier::Stopwatch watch;
       status = goals_.Update(in);
-      // About to end no_progress: a confined robot first tries its last resort.
-      if (t - NoProgressSince() >= e.no_progress_timeout_s && Confined(t) &&
-          goals_.LastResort(in)) {
-        last_resort_s_ = t;
+      // About to end no_progress: a robot that stood confined in that time
+      // first tries its last resort: driving back the way it came if it still
+      // stands there, going on with what it does if it got out by itself.
+      if (t - NoProgressSince() >= e.no_progress_timeout_s) {
+        if (const std::optional<Eigen::Vector2d> spot = ConfinedAt(t)) {
+          const bool still_there =
+              (in.robot_pose.translation() - *spot).norm() <= e.goals.last_resort_confined_radius_m;
+          if (goals_.LastResort(in, /*drive_back=*/still_there)) last_resort_s_ = t;
+        }
       }
       result_.timings.goals_s += watch.ElapsedUs() * 1e-6;
       if (goals_.counters().goals_issued > issued_before && status.goal && status.target) {

@@ -253,10 +253,11 @@ class ExplorationLoop {
   // When the no-progress clock started: the map's last progress, or the
   // goal manager's last resort after it.
   double NoProgressSince() const;
-  // True when every SLAM node of the last last_resort_confined_s lies within
-  // last_resort_confined_radius_m of the estimated pose (and the run is that
-  // old): the robot has not got anywhere (GoalManagerOptions::last_resort_*).
-  bool Confined(double sim_time_s) const;
+  // Where the robot stood confined during the no-progress window ending at
+  // 'sim_time_s': the latest SLAM node whose neighbours in time, over at least
+  // last_resort_confined_s, all lie within last_resort_confined_radius_m of it
+  // (GoalManagerOptions::last_resort_*); nothing if it never stood that long.
+  std::optional<Eigen::Vector2d> ConfinedAt(double sim_time_s) const;
 
   const ExplorationOptions options_;
   sim::World world_;

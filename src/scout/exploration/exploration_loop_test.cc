@@ -158,7 +158,7 @@ TEST(ExplorationLoopTest, AConfinedRobotTriesItsLastResortsBeforeNoProgress) {
   EXPECT_EQ(none.counters.last_resorts, 0);
   EXPECT_NEAR(none.sim_time_s, 20.0, 0.5);
   o.explore.goals.max_last_resorts = 2;
-  o.explore.goals.last_resort_confined_radius_m = 0.01;  // it moved: not confined
+  o.explore.goals.last_resort_confined_s = 30.0;  // longer than the window: never confined
   EXPECT_EQ(Explore(o, 1).counters.last_resorts, 0);
 }
 

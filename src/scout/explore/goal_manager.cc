@@ -638,10 +638,16 @@ bool GoalManager::StartRetrace(const ExploreInput& in) {
   return true;
 }
 
-bool GoalManager::LastResort(const ExploreInput& in) {
+bool GoalManager::LastResort(const ExploreInput& in, bool drive_back) {
   if (options_.last_resort_retrace_m <= 0.0 ||
-      counters_.last_resorts >= options_.max_last_resorts || !in.driven ||
-      (state_ != ExploreState::kPlanning && state_ != ExploreState::kDriving) ||
+      counters_.last_resorts >= options_.max_last_resorts) {
+    return false;
+  }
+  if (!drive_back) {
+    ++counters_.last_resorts;
+    return true;
+  }
+  if (!in.driven || (state_ != ExploreState::kPlanning && state_ != ExploreState::kDriving) ||
       backing_up_since_ || retracing_since_) {
     return false;
   }

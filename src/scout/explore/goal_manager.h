@@ -111,20 +111,21 @@ struct GoalManagerOptions {
   // did not leave office seed 13's pocket, a few mm closer to a corner on
   // the way out than it had been on the way in.
   double retrace_clearance_m = 0.01;
-  // The last resort before a run ends no_progress while the robot is
-  // confined (ExplorationLoop: its map has not grown for the no-progress
-  // timeout, and its estimated poses of the last last_resort_confined_s all
-  // lie within last_resort_confined_radius_m of where it stands): the goal it
-  // has fails, it drives back the way it came (its SLAM trajectory, loops
-  // erased: WayBack) until it stands last_resort_retrace_m away in a straight
-  // line, as a retrace (clearance retrace_clearance_m), closes the passage
-  // behind it as after a back-up, and selects afresh; the no-progress clock
-  // starts again. At most max_last_resorts times per run. A run that never
-  // meets that condition is not changed by it: every stored evaluation run
-  // ended complete, at max_sim_time, or no_progress for want of goals or
-  // while moving about. Office seed 13 stood in a pocket between a desk and a
-  // wall from 820 s and ended no_progress at 0.869; with this it leaves at
-  // 1300 s (docs/EXPERIMENTS.md). 0: off.
+  // The last resort before a run ends no_progress (ExplorationLoop: its map
+  // has not grown for the no-progress timeout) when the robot stood confined
+  // in that time (its estimated poses over at least last_resort_confined_s
+  // all within last_resort_confined_radius_m of one place). If it still
+  // stands there, the goal it has fails, it drives back the way it came (its
+  // SLAM trajectory, loops erased: WayBack) until it stands
+  // last_resort_retrace_m away in a straight line, as a retrace (clearance
+  // retrace_clearance_m), closes the passage behind it as after a back-up,
+  // and selects afresh. If it got out by itself, it goes on. Either way the
+  // no-progress clock starts again; at most max_last_resorts times per run. A
+  // run that never reaches the timer is not changed by it. Office seed 13
+  // stood in a pocket between a desk and a wall from 820 s and ended
+  // no_progress at 0.869; with this it leaves at 1300 s. Willow-garage seed 7
+  // got out of its corner by itself 8 s before the timer ended it at 0.702
+  // (docs/EXPERIMENTS.md). 0: off.
   double last_resort_retrace_m = 2.0;
   double last_resort_confined_radius_m = 1.0;
   double last_resort_confined_s = 60.0;
@@ -302,11 +303,13 @@ class GoalManager {
   // Advances the state machine and returns the command for this cycle.
   ExploreStatus Update(const ExploreInput& input);
   // The last resort (GoalManagerOptions::last_resort_retrace_m), for a robot
-  // its caller found confined with no progress: true when the drive back
-  // began (input.driven holds the way); false when it is off, used up, the
-  // robot is not exploring, already recovering, or no driven point is that
-  // far away.
-  bool LastResort(const ExploreInput& input);
+  // its caller found confined with no progress. With 'drive_back' (it still
+  // stands where it was confined): true when the drive back began
+  // (input.driven holds the way); false when it is off, used up, the robot is
+  // not exploring, already recovering, or no driven point is that far away.
+  // Without (it got out by itself): true, counted, and nothing else changes,
+  // unless off or used up.
+  bool LastResort(const ExploreInput& input, bool drive_back = true);
 
   ExploreState state() const { return state_; }
   const ExploreCounters& counters() const { return counters_; }

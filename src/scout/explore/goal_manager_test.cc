@@ -565,6 +565,22 @@ TEST(GoalManagerTest, LastResortDrivesBackTheWayItCameThenSelectsAfresh) {
   s = gm.Update(input(t += 0.1, robot, M_PI));
   EXPECT_EQ(s.state, ExploreState::kDriving);
   EXPECT_TRUE(s.goal.has_value());
+  // Out of the pocket by itself when the timer ran out: it goes on with
+  // its goal; that counts as a last resort too.
+  {
+    GoalManager out = MakeManager();
+    out.Start();
+    ExploreStatus o = out.Update(input(0.0, from, true));
+    ASSERT_EQ(o.state, ExploreState::kDriving);
+    const Eigen::Vector2d goal = *o.goal;
+    EXPECT_TRUE(out.LastResort(input(0.1, from, 0.0), /*drive_back=*/false));
+    EXPECT_EQ(out.counters().last_resorts, 1);
+    EXPECT_EQ(out.counters().goals_failed, 0);
+    o = out.Update(input(0.2, from, 0.0));
+    EXPECT_EQ(o.state, ExploreState::kDriving);
+    ASSERT_TRUE(o.goal.has_value());
+    EXPECT_EQ(*o.goal, goal);
+  }
   // Confined in the pocket again later: once more, then no more.
   EXPECT_TRUE(gm.LastResort(input(t += 0.1, stuck_at, M_PI)));
   EXPECT_EQ(gm.counters().last_resorts, 2);
