@@ -250,7 +250,7 @@ struct ExploreCounters {
   int stuck_reselections = 0;  // ... after which the goal was selected afresh, not failed
   int back_ups_blocked = 0;  // ... that stopped early (a mapped obstacle behind, or off the trail)
   int retraces = 0;          // ... that drove back the way it came instead (retrace_m)
-  int last_resorts = 0;      // drives back before no_progress (last_resort_retrace_m)
+  int last_resorts = 0;      // before no_progress: drives back, or going on (last_resort_*)
   int guard_stops = 0;       // the collision guard stopped a forward command
   int guard_steers = 0;      // control cycles it steered another arc instead
 };
