@@ -643,12 +643,16 @@ bool GoalManager::LastResort(const ExploreInput& in, bool drive_back) {
       counters_.last_resorts >= options_.max_last_resorts) {
     return false;
   }
-  if (!drive_back) {
+  // Out by itself, or in a recovery already (a back-up or a drive back): it
+  // goes on with what it does.
+  if (!drive_back || backing_up_since_ || retracing_since_) {
     ++counters_.last_resorts;
     return true;
   }
-  if (!in.driven || (state_ != ExploreState::kPlanning && state_ != ExploreState::kDriving) ||
-      backing_up_since_ || retracing_since_) {
+  // A goal that just ended (reached, failed) leaves the state machine about
+  // to select afresh, as in planning.
+  if (!in.driven || state_ == ExploreState::kIdle || state_ == ExploreState::kFinished ||
+      state_ == ExploreState::kReturning) {
     return false;
   }
   const Eigen::Vector2d here = in.robot_pose.translation();

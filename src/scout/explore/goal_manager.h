@@ -305,10 +305,10 @@ class GoalManager {
   // The last resort (GoalManagerOptions::last_resort_retrace_m), for a robot
   // its caller found confined with no progress. With 'drive_back' (it still
   // stands where it was confined): true when the drive back began
-  // (input.driven holds the way); false when it is off, used up, the robot is
-  // not exploring, already recovering, or no driven point is that far away.
-  // Without (it got out by itself): true, counted, and nothing else changes,
-  // unless off or used up.
+  // (input.driven holds the way); false when the robot is idle, finished or
+  // returning home, or no driven point is that far away. Without (it got out
+  // by itself), or while a back-up or drive back is under way: true, counted,
+  // and nothing else changes. False when off or used up.
   bool LastResort(const ExploreInput& input, bool drive_back = true);
 
   ExploreState state() const { return state_; }

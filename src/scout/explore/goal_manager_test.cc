@@ -543,7 +543,6 @@ TEST(GoalManagerTest, LastResortDrivesBackTheWayItCameThenSelectsAfresh) {
   ASSERT_TRUE(gm.LastResort(input(t += 0.1, stuck_at, 0.0)));
   EXPECT_EQ(gm.counters().last_resorts, 1);
   EXPECT_EQ(gm.counters().goals_failed, 1);
-  EXPECT_FALSE(gm.LastResort(input(t += 0.1, stuck_at, 0.0))) << "already driving back";
   // Facing away from the way back: it turns on the spot first ...
   s = gm.Update(input(t += 0.1, stuck_at, 0.0));
   EXPECT_EQ(s.state, ExploreState::kDriving);
@@ -568,7 +567,9 @@ TEST(GoalManagerTest, LastResortDrivesBackTheWayItCameThenSelectsAfresh) {
   // Out of the pocket by itself when the timer ran out: it goes on with
   // its goal; that counts as a last resort too.
   {
-    GoalManager out = MakeManager();
+    GoalManagerOptions three = NoStuckRecovery();
+    three.max_last_resorts = 3;
+    GoalManager out = MakeManager(three);
     out.Start();
     ExploreStatus o = out.Update(input(0.0, from, true));
     ASSERT_EQ(o.state, ExploreState::kDriving);
@@ -580,15 +581,24 @@ TEST(GoalManagerTest, LastResortDrivesBackTheWayItCameThenSelectsAfresh) {
     EXPECT_EQ(o.state, ExploreState::kDriving);
     ASSERT_TRUE(o.goal.has_value());
     EXPECT_EQ(*o.goal, goal);
+    // Confined later, it drives back; if the timer ran out again while it
+    // drives back, it goes on driving back.
+    ASSERT_TRUE(out.LastResort(input(0.3, stuck_at, 0.0)));
+    EXPECT_EQ(out.counters().last_resorts, 2);
+    EXPECT_EQ(out.counters().goals_failed, 1);
+    ASSERT_TRUE(out.LastResort(input(0.4, stuck_at, 0.0)));
+    EXPECT_EQ(out.counters().last_resorts, 3);
+    EXPECT_EQ(out.counters().goals_failed, 1);
+    o = out.Update(input(0.5, stuck_at, 0.0));
+    EXPECT_EQ(o.state, ExploreState::kDriving);
+    EXPECT_FALSE(o.goal.has_value());      // still on the way back, with no goal
+    EXPECT_EQ(o.command.linear_mps, 0.0);  // turning round to it first
+    EXPECT_NE(o.command.angular_radps, 0.0);
   }
   // Confined in the pocket again later: once more, then no more.
   EXPECT_TRUE(gm.LastResort(input(t += 0.1, stuck_at, M_PI)));
   EXPECT_EQ(gm.counters().last_resorts, 2);
-  for (int k = 0; k < 400 && s.state == ExploreState::kDriving; ++k) {
-    s = gm.Update(input(t += 0.1, stuck_at, 0.0));
-  }
-  s = gm.Update(input(t += 0.1, stuck_at, 0.0));
-  EXPECT_FALSE(gm.LastResort(input(t += 0.1, stuck_at, 0.0)));
+  EXPECT_FALSE(gm.LastResort(input(t += 0.1, stuck_at, 0.0))) << "used up";
   EXPECT_EQ(gm.counters().last_resorts, 2);
 }
 
