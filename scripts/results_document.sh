@@ -159,9 +159,9 @@ EXPLORE_SCAN_CHECK_COMMIT=d13fac7
 # 9847fb7 (the scan check also uses the returns of the last 10 s of scans) changes the scout
 # policy's runs only, like d13fac7.
 EXPLORE_SCAN_MEMORY_COMMIT=9847fb7
-# ea2a217 and 93f89d1 (a confined robot's last resort, when the no-progress timer runs out) change only runs
+# ea2a217, 93f89d1 and 428423a (a confined robot's last resort, when the no-progress timer runs out) change only runs
 # that ended no_progress by that timer ("frontier_left": null, the goals had not run out).
-EXPLORE_LAST_RESORT_COMMIT=93f89d1
+EXPLORE_LAST_RESORT_COMMIT=428423a
 stale_runs() {
   local name f
   for name in "$@"; do
