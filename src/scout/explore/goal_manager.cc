@@ -631,11 +631,15 @@ bool GoalManager::StartRetrace(const ExploreInput& in) {
     return false;
   }
   ++counters_.retraces;
+  // The goal's path is given up; the goal ends when the retrace does.
+  BeginDriveBack(in, retrace_trail_.Reversed(in.robot_pose.translation()));
+  return true;
+}
+
+void GoalManager::BeginDriveBack(const ExploreInput& in, std::vector<Eigen::Vector2d> way) {
   moving_since_.reset();
   retracing_since_ = {in.time_s, in.robot_pose.translation()};
-  // The goal's path is given up; the goal ends when the retrace does.
-  follower_.SetPath(retrace_trail_.Reversed(in.robot_pose.translation()));
-  return true;
+  follower_.SetPath(std::move(way));
 }
 
 bool GoalManager::LastResort(const ExploreInput& in, bool drive_back) {
@@ -655,8 +659,8 @@ bool GoalManager::LastResort(const ExploreInput& in, bool drive_back) {
       state_ == ExploreState::kReturning) {
     return false;
   }
-  const Eigen::Vector2d here = in.robot_pose.translation();
-  std::vector<Eigen::Vector2d> way = WayBack(*in.driven, here, options_.last_resort_retrace_m);
+  std::vector<Eigen::Vector2d> way =
+      WayBack(*in.driven, in.robot_pose.translation(), options_.last_resort_retrace_m);
   if (way.empty()) return false;
   ++counters_.last_resorts;
   // The goal it could not reach in all that time fails; the drive back ends
@@ -666,8 +670,7 @@ bool GoalManager::LastResort(const ExploreInput& in, bool drive_back) {
     failed_.RecordFailure(Resolve(*goal_, in.submaps), in.submaps, *map_);
   }
   EndGoal(ExploreState::kDriving);
-  retracing_since_ = {in.time_s, here};
-  follower_.SetPath(std::move(way));
+  BeginDriveBack(in, std::move(way));
   return true;
 }
 

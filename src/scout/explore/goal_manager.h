@@ -394,6 +394,8 @@ class GoalManager {
   // Starts driving back along retrace_trail_ when it is long enough; false
   // otherwise.
   bool StartRetrace(const ExploreInput& in);
+  // Follows 'way' (starting at the robot) as a retrace (Retrace), from now.
+  void BeginDriveBack(const ExploreInput& in, std::vector<Eigen::Vector2d> way);
   // Follows the retrace in progress; ends it (as a back-up ends) at its end
   // or when the robot gets stuck on it.
   void Retrace(const ExploreInput& in, ExploreStatus& status);
