@@ -325,6 +325,7 @@ TEST_F(ExploreCli, RecordsItsSensorStreamForReplayAgainstTheTruePoses) {
       dir_ / "by_hand.yaml",
       "slam:\n  local:\n    use_online_correlative_scan_matching: false\n"
       "    ceres_scan_matcher:\n      translation_weight: 5\n      rotation_weight: 10\n"
+      "      likelihood_field_sigma_m: 0\n"
       "  pose_graph:\n    synchronous: true\n    synchronous_solve_delay_nodes: 10\n");
   r = RunScout(replay + " --config " + (dir_ / "by_hand.yaml").string() + " --out " +
                (dir_ / "by_hand").string());

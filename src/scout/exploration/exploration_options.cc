@@ -103,6 +103,10 @@ void CheckExplorationOptions(const ExplorationOptions& options) {
   if (!(e.local_slam.rotation_weight >= 0.0) || !std::isfinite(e.local_slam.rotation_weight)) {
     throw InputError("explore.local_slam.rotation_weight: expected a finite value >= 0");
   }
+  if (!(e.local_slam.likelihood_field_sigma_m >= 0.0) ||
+      !std::isfinite(e.local_slam.likelihood_field_sigma_m)) {
+    throw InputError("explore.local_slam.likelihood_field_sigma_m: expected a finite value >= 0");
+  }
   sim::CheckSimulatedRobotOptions(options.robot);
   frontier::Validate(options.frontier);
   try {
@@ -151,6 +155,7 @@ slam::SlamOptions EffectiveSlamOptions(const ExplorationOptions& options) {
   slam.local.use_online_correlative_scan_matching = l.use_online_correlative_scan_matching;
   slam.local.ceres_scan_matcher.translation_weight = l.translation_weight;
   slam.local.ceres_scan_matcher.rotation_weight = l.rotation_weight;
+  slam.local.ceres_scan_matcher.likelihood_field_sigma_m = l.likelihood_field_sigma_m;
   if (options.explore.synchronous_slam) {
     slam.pose_graph.synchronous = true;
     slam.pose_graph.synchronous_solve_delay_nodes = options.explore.solve_delay_nodes;

@@ -68,6 +68,12 @@ TEST_F(ConfigTest, SlamSectionOfTheDefaultFileMatchesTheBuiltInDefaults) {
                    d.local.ceres_scan_matcher.unknown_probability);
   EXPECT_DOUBLE_EQ(c.local.real_time_correlative_scan_matcher.unknown_probability,
                    d.local.real_time_correlative_scan_matcher.unknown_probability);
+  EXPECT_DOUBLE_EQ(c.local.ceres_scan_matcher.likelihood_field_sigma_m,
+                   d.local.ceres_scan_matcher.likelihood_field_sigma_m);
+  EXPECT_DOUBLE_EQ(c.local.ceres_scan_matcher.likelihood_field_occupied_probability,
+                   d.local.ceres_scan_matcher.likelihood_field_occupied_probability);
+  EXPECT_DOUBLE_EQ(c.pose_graph.constraint_builder.ceres_scan_matcher.likelihood_field_sigma_m,
+                   d.pose_graph.constraint_builder.ceres_scan_matcher.likelihood_field_sigma_m);
   const slam::ConstraintBuilderOptions& cb = c.pose_graph.constraint_builder;
   const slam::ConstraintBuilderOptions& db = d.pose_graph.constraint_builder;
   EXPECT_DOUBLE_EQ(cb.min_overlap, db.min_overlap);
@@ -124,6 +130,21 @@ TEST_F(ConfigTest, SlamValuesOverrideDefaultsAndErrorsNameTheKey) {
   EXPECT_NE(e.find("[0, 180]"), std::string::npos) << e;
   e = ErrorOf("slam:\n  local:\n    range_filter:\n      min_range_m: 20\n");
   EXPECT_NE(e.find("slam.local.range_filter.max_range_m"), std::string::npos) << e;
+  // The likelihood field: read, and checked.
+  const ScoutConfig field = LoadConfig(
+      Write("slam:\n  local:\n    ceres_scan_matcher:\n      likelihood_field_sigma_m: 0\n"
+            "      likelihood_field_occupied_probability: 0.6\n"));
+  EXPECT_EQ(field.slam.local.ceres_scan_matcher.likelihood_field_sigma_m, 0.0);
+  EXPECT_DOUBLE_EQ(field.slam.local.ceres_scan_matcher.likelihood_field_occupied_probability, 0.6);
+  e = ErrorOf("slam:\n  local:\n    ceres_scan_matcher:\n      likelihood_field_sigma_m: -1\n");
+  EXPECT_NE(e.find("slam.local.ceres_scan_matcher.likelihood_field_sigma_m"), std::string::npos)
+      << e;
+  e = ErrorOf(
+      "slam:\n  local:\n    ceres_scan_matcher:\n"
+      "      likelihood_field_occupied_probability: 0.95\n");
+  EXPECT_NE(e.find("slam.local.ceres_scan_matcher.likelihood_field_occupied_probability"),
+            std::string::npos)
+      << e;
 }
 
 TEST_F(ConfigTest, ExtremeValuesAreErrorsNamingTheKeyNotRunawayRuns) {

@@ -143,6 +143,7 @@ void ReadExploreOptions(YamlSection s, exploration::ExploreOptions* o) {
                &o->local_slam.use_online_correlative_scan_matching);
     l.ReadNonNegative("translation_weight", &o->local_slam.translation_weight);
     l.ReadNonNegative("rotation_weight", &o->local_slam.rotation_weight);
+    l.ReadNonNegative("likelihood_field_sigma_m", &o->local_slam.likelihood_field_sigma_m);
     l.RejectUnknownKeys();
   }
   s.ReadNonNegativeAtMost("frontier_inflation_radius_m", &o->frontier_inflation_radius_m, 5.0);

@@ -36,6 +36,8 @@ TEST_F(ExploreConfigTest, DefaultFileMatchesTheBuiltInDefaults) {
   EXPECT_DOUBLE_EQ(c.explore.local_slam.translation_weight,
                    d.explore.local_slam.translation_weight);
   EXPECT_DOUBLE_EQ(c.explore.local_slam.rotation_weight, d.explore.local_slam.rotation_weight);
+  EXPECT_DOUBLE_EQ(c.explore.local_slam.likelihood_field_sigma_m,
+                   d.explore.local_slam.likelihood_field_sigma_m);
   EXPECT_DOUBLE_EQ(c.explore.frontier_inflation_radius_m, d.explore.frontier_inflation_radius_m);
   EXPECT_EQ(c.explore.boundary, d.explore.boundary);
   EXPECT_DOUBLE_EQ(c.explore.goals.progress_timeout_s, d.explore.goals.progress_timeout_s);
@@ -94,6 +96,9 @@ TEST_F(ExploreConfigTest, ValuesAreReadWithTheirUnits) {
       "rotate_in_place_heading_deg: "
       "30\nrobot:\n  start_heading_deg: -90\n  lidar:\n    beams: 361\n");
   EXPECT_DOUBLE_EQ(c.explore.max_sim_time_s, 120.0);
+  EXPECT_DOUBLE_EQ(Load("explore:\n  local_slam:\n    likelihood_field_sigma_m: 0.05\n")
+                       .explore.local_slam.likelihood_field_sigma_m,
+                   0.05);
   EXPECT_NEAR(c.explore.initial_turn_rad, std::numbers::pi / 2, 1e-12);
   EXPECT_TRUE(c.explore.goals.return_to_start);
   EXPECT_DOUBLE_EQ(c.explore.goals.scan_check_radius_m, 0.15);
@@ -148,6 +153,8 @@ TEST_F(ExploreConfigTest, ErrorsNameTheKey) {
   EXPECT_NE(ErrorOf("robot:\n  lidar:\n    beams: 1\n").find("robot.lidar.beams"),
             std::string::npos);
   // Range checks of the explore module come back as InputError naming the key.
+  const std::string field = ErrorOf("explore:\n  local_slam:\n    likelihood_field_sigma_m: -1\n");
+  EXPECT_NE(field.find("explore.local_slam.likelihood_field_sigma_m"), std::string::npos) << field;
   const std::string resorts = ErrorOf("explore:\n  goals:\n    max_last_resorts: -1\n");
   EXPECT_NE(resorts.find("explore.goals.max_last_resorts"), std::string::npos) << resorts;
   const std::string resort_m = ErrorOf("explore:\n  goals:\n    last_resort_retrace_m: -2\n");

@@ -42,6 +42,9 @@ void ReadCeresScanMatcher(YamlSection s, slam::CeresScanMatcherOptions* o) {
   s.ReadInt("max_num_iterations", &o->max_num_iterations, 1);
   s.ReadInt("full_weight_num_points", &o->full_weight_num_points, 0);
   ReadGridProbability(s, "unknown_probability", &o->unknown_probability);
+  s.ReadNonNegative("likelihood_field_sigma_m", &o->likelihood_field_sigma_m);
+  ReadGridProbability(s, "likelihood_field_occupied_probability",
+                      &o->likelihood_field_occupied_probability);
   s.RejectUnknownKeys();
 }
 

@@ -66,6 +66,21 @@ TEST(CeresScanMatcherTest, RecoversKnownOffsetOnRoomGrid) {
   EXPECT_LT(AngleError(result, truth), 0.005) << result;
 }
 
+TEST(CeresScanMatcherTest, RecoversKnownOffsetOnRoomGridFromItsLikelihoodField) {
+  const grid::ProbabilityGrid grid = testing::RoomGrid();
+  const Rigid2d truth(-0.4, 0.3, 0.2);
+  const PointCloud points = testing::ScanPoints(testing::Room(), truth);
+  const Rigid2d initial(truth.x() + 0.07, truth.y() - 0.05, truth.theta() + 0.05);
+  CeresScanMatcherOptions options;
+  options.translation_weight = 0.1;
+  options.rotation_weight = 0.1;
+  options.likelihood_field_sigma_m = 0.06;
+  const Rigid2d result =
+      CeresScanMatcher(options).Match(initial.translation(), initial, points, grid);
+  EXPECT_LT((result.translation() - truth.translation()).norm(), 0.015) << result;
+  EXPECT_LT(AngleError(result, truth), 0.005) << result;
+}
+
 TEST(CeresScanMatcherTest, DefaultPriorsHoldAPoseTheScanAgreesWith) {
   const grid::ProbabilityGrid grid = testing::RoomGrid();
   const Rigid2d truth(0.3, -0.2, -0.4);
@@ -162,6 +177,14 @@ TEST(CeresScanMatcherTest, RejectsInvalidOptions) {
   EXPECT_THROW(CeresScanMatcher{options}, std::invalid_argument);
   options = {};
   options.full_weight_num_points = -1;
+  EXPECT_THROW(CeresScanMatcher{options}, std::invalid_argument);
+  options = {};
+  options.likelihood_field_sigma_m = -0.1;
+  EXPECT_THROW(CeresScanMatcher{options}, std::invalid_argument);
+  options.likelihood_field_sigma_m = std::nan("");
+  EXPECT_THROW(CeresScanMatcher{options}, std::invalid_argument);
+  options = {};
+  options.likelihood_field_occupied_probability = 0.95;
   EXPECT_THROW(CeresScanMatcher{options}, std::invalid_argument);
 }
 
