@@ -205,8 +205,9 @@ stale_since() {
 # 6c5133f: loop closures in thin submaps judged against their own scans (f236b19, then the
 # ambiguity margin), which changes the Radish replays' SLAM; 560cef9 added the consistency
 # measure. A replay run older than it is redone. (93a957a's chained search windows are off by
-# default, so replays are unchanged.)
-REPLAY_SLAM_COMMIT=6c5133f
+# default, so replays are unchanged.) 0c4defc: replays match scans on the submaps' likelihood
+# field; the explorer keeps the probabilities (explore.local_slam), so explore runs are unchanged.
+REPLAY_SLAM_COMMIT=0c4defc
 # stale_section_run SECTION NAME: prints NAME if a commit after its build changed its result.
 stale_section_run() {
   case $1 in
