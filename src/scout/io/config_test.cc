@@ -72,6 +72,8 @@ TEST_F(ConfigTest, SlamSectionOfTheDefaultFileMatchesTheBuiltInDefaults) {
                    d.local.ceres_scan_matcher.likelihood_field_sigma_m);
   EXPECT_DOUBLE_EQ(c.local.ceres_scan_matcher.likelihood_field_occupied_probability,
                    d.local.ceres_scan_matcher.likelihood_field_occupied_probability);
+  EXPECT_DOUBLE_EQ(c.local.real_time_correlative_scan_matcher.likelihood_field_sigma_m,
+                   d.local.real_time_correlative_scan_matcher.likelihood_field_sigma_m);
   EXPECT_DOUBLE_EQ(c.pose_graph.constraint_builder.ceres_scan_matcher.likelihood_field_sigma_m,
                    d.pose_graph.constraint_builder.ceres_scan_matcher.likelihood_field_sigma_m);
   const slam::ConstraintBuilderOptions& cb = c.pose_graph.constraint_builder;
@@ -136,6 +138,17 @@ TEST_F(ConfigTest, SlamValuesOverrideDefaultsAndErrorsNameTheKey) {
             "      likelihood_field_occupied_probability: 0.6\n"));
   EXPECT_EQ(field.slam.local.ceres_scan_matcher.likelihood_field_sigma_m, 0.0);
   EXPECT_DOUBLE_EQ(field.slam.local.ceres_scan_matcher.likelihood_field_occupied_probability, 0.6);
+  EXPECT_DOUBLE_EQ(LoadConfig(Write("slam:\n  local:\n    real_time_correlative_scan_matcher:\n"
+                                    "      likelihood_field_sigma_m: 0.06\n"))
+                       .slam.local.real_time_correlative_scan_matcher.likelihood_field_sigma_m,
+                   0.06);
+  e = ErrorOf(
+      "slam:\n  local:\n    real_time_correlative_scan_matcher:\n"
+      "      likelihood_field_occupied_probability: 1.5\n");
+  EXPECT_NE(e.find("slam.local.real_time_correlative_scan_matcher.likelihood_field_occupied_"
+                   "probability"),
+            std::string::npos)
+      << e;
   e = ErrorOf("slam:\n  local:\n    ceres_scan_matcher:\n      likelihood_field_sigma_m: -1\n");
   EXPECT_NE(e.find("slam.local.ceres_scan_matcher.likelihood_field_sigma_m"), std::string::npos)
       << e;

@@ -68,6 +68,9 @@ void ReadLocal(YamlSection s, slam::LocalSlamOptions* o) {
     c.ReadNonNegative("translation_delta_cost_weight", &m.translation_delta_cost_weight);
     c.ReadNonNegative("rotation_delta_cost_weight", &m.rotation_delta_cost_weight);
     ReadGridProbability(c, "unknown_probability", &m.unknown_probability);
+    c.ReadNonNegative("likelihood_field_sigma_m", &m.likelihood_field_sigma_m);
+    ReadGridProbability(c, "likelihood_field_occupied_probability",
+                        &m.likelihood_field_occupied_probability);
     c.RejectUnknownKeys();
   }
   ReadCeresScanMatcher(s.Section("ceres_scan_matcher"), &o->ceres_scan_matcher);

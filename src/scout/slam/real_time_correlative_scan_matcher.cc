@@ -11,6 +11,7 @@
 #include "scout/common/format.h"
 #include "scout/grid/probability_values.h"
 #include "scout/slam/fast_correlative_scan_matcher.h"
+#include "scout/slam/likelihood_field_cost.h"
 
 namespace scout::slam {
 namespace {
@@ -39,6 +40,13 @@ void Validate(const RealTimeCorrelativeScanMatcherOptions& options) {
   CheckOption(options.unknown_probability >= grid::kMinProbability - 1e-6 &&
                   options.unknown_probability <= grid::kMaxProbability + 1e-6,
               "unknown_probability", options.unknown_probability, "in [0.1, 0.9]");
+  CheckOption(
+      options.likelihood_field_sigma_m >= 0.0 && std::isfinite(options.likelihood_field_sigma_m),
+      "likelihood_field_sigma_m", options.likelihood_field_sigma_m, "finite and >= 0");
+  CheckOption(options.likelihood_field_occupied_probability >= grid::kMinProbability - 1e-6 &&
+                  options.likelihood_field_occupied_probability <= grid::kMaxProbability + 1e-6,
+              "likelihood_field_occupied_probability",
+              options.likelihood_field_occupied_probability, "in [0.1, 0.9]");
 }
 
 RealTimeCorrelativeScanMatcher::RealTimeCorrelativeScanMatcher(
@@ -82,6 +90,48 @@ ScanMatchResult RealTimeCorrelativeScanMatcher::Match(
     const int v = values[static_cast<size_t>(y) * limits.width() + x] & grid::kMaxValue;
     return v + (v == grid::kUnknownValue) * unknown_value;
   };
+
+  if (options_.likelihood_field_sigma_m > 0.0) {
+    // Every candidate's points lie within the arc the window turns the
+    // farthest one through, and the linear window, of the initial placement.
+    const double margin_m = max_range_m * options_.angular_search_window_rad +
+                            options_.linear_search_window_m +
+                            3.0 * options_.likelihood_field_sigma_m + resolution;
+    const LikelihoodField field(grid, initial_pose_estimate, points, margin_m,
+                                options_.likelihood_field_sigma_m,
+                                options_.likelihood_field_occupied_probability);
+    const grid::MapLimits& window = field.limits();
+    std::vector<grid::CellIndex> window_cells(points.size());
+    for (int k = -num_angles_each_side; k <= num_angles_each_side; ++k) {
+      const double delta_angle = k * angle_step;
+      const geometry::Rigid2d rotated(initial_pose_estimate.translation(),
+                                      initial_pose_estimate.theta() + delta_angle);
+      for (size_t i = 0; i < points.size(); ++i) {
+        window_cells[i] = window.CellContaining(rotated * points[i]);
+      }
+      for (int x = -linear_bound; x <= linear_bound; ++x) {
+        for (int y = -linear_bound; y <= linear_bound; ++y) {
+          double sum = 0.0;
+          for (const grid::CellIndex& cell : window_cells) {
+            double value;
+            field.GetValue(cell.y + y, cell.x + x, &value);
+            sum += value;
+          }
+          const double squared_shift_m2 = resolution * resolution * (x * x + y * y);
+          const double score =
+              sum / static_cast<double>(points.size()) *
+              std::exp(-(options_.translation_delta_cost_weight * squared_shift_m2 +
+                         options_.rotation_delta_cost_weight * delta_angle * delta_angle));
+          if (score > best.score) {
+            best.score = score;
+            best.pose = geometry::Rigid2d(
+                rotated.translation() + resolution * Eigen::Vector2d(x, y), rotated.theta());
+          }
+        }
+      }
+    }
+    return best;
+  }
 
   std::vector<grid::CellIndex> cells(points.size());
   for (int k = -num_angles_each_side; k <= num_angles_each_side; ++k) {

@@ -210,6 +210,27 @@ TEST(RealTimeCorrelativeScanMatcherTest, RecoversOffsetWithinWindow) {
   EXPECT_LT(at_initial.score, result.score - 0.1);
 }
 
+TEST(RealTimeCorrelativeScanMatcherTest, RecoversOffsetWithinWindowOnTheLikelihoodField) {
+  const grid::ProbabilityGrid grid = testing::RoomGrid();
+  const Rigid2d truth(-0.4, 0.3, 0.2);
+  const PointCloud points = testing::ScanPoints(testing::Room(), truth);
+  const Rigid2d initial(truth.x() + 0.08, truth.y() - 0.07, truth.theta() - 0.2);
+  RealTimeCorrelativeScanMatcherOptions options;
+  options.likelihood_field_sigma_m = 0.06;
+  const ScanMatchResult result =
+      RealTimeCorrelativeScanMatcher(options).Match(initial, points, grid);
+  EXPECT_LT((result.pose.translation() - truth.translation()).norm(), 0.05) << result.pose;
+  EXPECT_LT(AngleError(result.pose, truth), 0.01) << result.pose;
+  // Most points lie on a wall cell, where the field is 1.
+  EXPECT_GT(result.score, 0.7);
+  options.linear_search_window_m = 0.0;
+  options.angular_search_window_rad = 0.0;
+  const ScanMatchResult at_initial =
+      RealTimeCorrelativeScanMatcher(options).Match(initial, points, grid);
+  EXPECT_EQ(at_initial.pose.translation(), initial.translation());
+  EXPECT_LT(at_initial.score, result.score - 0.3);
+}
+
 TEST(RealTimeCorrelativeScanMatcherTest, ThenCeresRefinesBelowACell) {
   const grid::ProbabilityGrid grid = testing::RoomGrid();
   const Rigid2d truth(0.7, -0.9, 2.5);
@@ -235,6 +256,12 @@ TEST(RealTimeCorrelativeScanMatcherTest, EmptyScanAndInvalidOptions) {
   EXPECT_EQ(result.score, 0.0);
   RealTimeCorrelativeScanMatcherOptions options;
   options.angular_search_window_rad = 4.0;
+  EXPECT_THROW(RealTimeCorrelativeScanMatcher{options}, std::invalid_argument);
+  options = {};
+  options.likelihood_field_sigma_m = -1.0;
+  EXPECT_THROW(RealTimeCorrelativeScanMatcher{options}, std::invalid_argument);
+  options = {};
+  options.likelihood_field_occupied_probability = 0.05;
   EXPECT_THROW(RealTimeCorrelativeScanMatcher{options}, std::invalid_argument);
 }
 
