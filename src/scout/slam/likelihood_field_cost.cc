@@ -1,6 +1,5 @@
 #include "scout/slam/likelihood_field_cost.h"
 
-#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
@@ -13,6 +12,10 @@ LikelihoodField::LikelihoodField(const grid::ProbabilityGrid& grid, const geomet
                                  const PointCloud& points, double margin_m, double sigma_m,
                                  double occupied_probability) {
   const grid::MapLimits& g = grid.limits();
+  if (points.empty()) {
+    limits_ = grid::MapLimits(g.resolution(), g.origin(), 0, 0);
+    return;
+  }
   Eigen::Vector2d lo = Eigen::Vector2d::Constant(1e300), hi = Eigen::Vector2d::Constant(-1e300);
   for (const Eigen::Vector2d& p : points) {
     const Eigen::Vector2d q = pose * p;

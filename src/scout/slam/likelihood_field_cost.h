@@ -23,7 +23,8 @@ namespace scout::slam {
 class LikelihoodField {
  public:
   enum { DATA_DIMENSION = 1 };
-  // The window covers 'points' under 'pose' plus 'margin_m' around them.
+  // The window covers 'points' under 'pose' plus 'margin_m' around them
+  // (none without points: every value then reads 0).
   LikelihoodField(const grid::ProbabilityGrid& grid, const geometry::Rigid2d& pose,
                   const PointCloud& points, double margin_m, double sigma_m,
                   double occupied_probability);

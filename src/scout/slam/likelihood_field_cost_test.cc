@@ -77,6 +77,10 @@ TEST(LikelihoodFieldTest, AGridWithoutWallsAndTheOutsideOfTheWindowScoreNothing)
   EXPECT_DOUBLE_EQ(Residual(field, {0.2, 0.2}), 1.0);
   // Outside the window: as far from walls as can be.
   EXPECT_DOUBLE_EQ(Residual(field, {-5.0, 3.0}), 1.0);
+  // Without points there is no window.
+  const LikelihoodField none(HandBuiltGrid(), Rigid2d(), {}, 0.5, kSigma, 0.5);
+  EXPECT_EQ(none.limits().num_cells(), 0);
+  EXPECT_DOUBLE_EQ(Residual(none, CellCentre(10, 10)), 1.0);
 }
 
 TEST(LikelihoodFieldCostTest, JacobianEqualsCentralDifferences) {

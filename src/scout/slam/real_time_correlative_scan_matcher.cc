@@ -91,6 +91,21 @@ ScanMatchResult RealTimeCorrelativeScanMatcher::Match(
     return v + (v == grid::kUnknownValue) * unknown_value;
   };
 
+  // A candidate: the scan turned by delta_angle, then shifted by (x, y) cells,
+  // with the mean score of its points.
+  const auto offer = [&](double mean_score, const geometry::Rigid2d& rotated, double delta_angle,
+                         int x, int y) {
+    const double squared_shift_m2 = resolution * resolution * (x * x + y * y);
+    const double score =
+        mean_score * std::exp(-(options_.translation_delta_cost_weight * squared_shift_m2 +
+                                options_.rotation_delta_cost_weight * delta_angle * delta_angle));
+    if (score > best.score) {
+      best.score = score;
+      best.pose = geometry::Rigid2d(rotated.translation() + resolution * Eigen::Vector2d(x, y),
+                                    rotated.theta());
+    }
+  };
+
   if (options_.likelihood_field_sigma_m > 0.0) {
     // Every candidate's points lie within the arc the window turns the
     // farthest one through, and the linear window, of the initial placement.
@@ -117,16 +132,7 @@ ScanMatchResult RealTimeCorrelativeScanMatcher::Match(
             field.GetValue(cell.y + y, cell.x + x, &value);
             sum += value;
           }
-          const double squared_shift_m2 = resolution * resolution * (x * x + y * y);
-          const double score =
-              sum / static_cast<double>(points.size()) *
-              std::exp(-(options_.translation_delta_cost_weight * squared_shift_m2 +
-                         options_.rotation_delta_cost_weight * delta_angle * delta_angle));
-          if (score > best.score) {
-            best.score = score;
-            best.pose = geometry::Rigid2d(
-                rotated.translation() + resolution * Eigen::Vector2d(x, y), rotated.theta());
-          }
+          offer(sum / static_cast<double>(points.size()), rotated, delta_angle, x, y);
         }
       }
     }
@@ -161,16 +167,7 @@ ScanMatchResult RealTimeCorrelativeScanMatcher::Match(
             min_probability +
             (static_cast<double>(sum) / static_cast<double>(points.size()) - 1.0) *
                 probability_per_value;
-        const double squared_shift_m2 = resolution * resolution * (x * x + y * y);
-        const double score =
-            mean_probability *
-            std::exp(-(options_.translation_delta_cost_weight * squared_shift_m2 +
-                       options_.rotation_delta_cost_weight * delta_angle * delta_angle));
-        if (score > best.score) {
-          best.score = score;
-          best.pose = geometry::Rigid2d(rotated.translation() + resolution * Eigen::Vector2d(x, y),
-                                        rotated.theta());
-        }
+        offer(mean_probability, rotated, delta_angle, x, y);
       }
     }
   }
