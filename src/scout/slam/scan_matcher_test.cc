@@ -46,14 +46,13 @@ TEST(PointCloudTest, AdaptiveVoxelFilterKeepsAtLeastMinPointsAndDropsFarOnes) {
   EXPECT_THROW(AdaptiveVoxelFilter(points, options), std::invalid_argument);
 }
 
-TEST(CeresScanMatcherTest, RecoversKnownOffsetOnRoomGrid) {
+// Matches a scan of the room placed 7 cm, 5 cm and 0.05 rad off its true pose;
+// the priors only regularise, the scan alone must pull the pose back.
+void ExpectRecoversKnownOffsetOnRoomGrid(CeresScanMatcherOptions options) {
   const grid::ProbabilityGrid grid = testing::RoomGrid();
   const Rigid2d truth(-0.4, 0.3, 0.2);
   const PointCloud points = testing::ScanPoints(testing::Room(), truth);
   const Rigid2d initial(truth.x() + 0.07, truth.y() - 0.05, truth.theta() + 0.05);
-  // The priors only regularise here: the scan alone must pull the pose back.
-  CeresScanMatcherOptions options;
-  options.occupied_space_weight = 20.0;
   options.translation_weight = 0.1;
   options.rotation_weight = 0.1;
   const CeresScanMatcher matcher(options);
@@ -66,19 +65,16 @@ TEST(CeresScanMatcherTest, RecoversKnownOffsetOnRoomGrid) {
   EXPECT_LT(AngleError(result, truth), 0.005) << result;
 }
 
-TEST(CeresScanMatcherTest, RecoversKnownOffsetOnRoomGridFromItsLikelihoodField) {
-  const grid::ProbabilityGrid grid = testing::RoomGrid();
-  const Rigid2d truth(-0.4, 0.3, 0.2);
-  const PointCloud points = testing::ScanPoints(testing::Room(), truth);
-  const Rigid2d initial(truth.x() + 0.07, truth.y() - 0.05, truth.theta() + 0.05);
+TEST(CeresScanMatcherTest, RecoversKnownOffsetOnRoomGrid) {
   CeresScanMatcherOptions options;
-  options.translation_weight = 0.1;
-  options.rotation_weight = 0.1;
+  options.occupied_space_weight = 20.0;
+  ExpectRecoversKnownOffsetOnRoomGrid(options);
+}
+
+TEST(CeresScanMatcherTest, RecoversKnownOffsetOnRoomGridFromItsLikelihoodField) {
+  CeresScanMatcherOptions options;
   options.likelihood_field_sigma_m = 0.06;
-  const Rigid2d result =
-      CeresScanMatcher(options).Match(initial.translation(), initial, points, grid);
-  EXPECT_LT((result.translation() - truth.translation()).norm(), 0.015) << result;
-  EXPECT_LT(AngleError(result, truth), 0.005) << result;
+  ExpectRecoversKnownOffsetOnRoomGrid(options);
 }
 
 TEST(CeresScanMatcherTest, DefaultPriorsHoldAPoseTheScanAgreesWith) {
