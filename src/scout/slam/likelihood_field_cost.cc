@@ -1,5 +1,6 @@
 #include "scout/slam/likelihood_field_cost.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
@@ -29,17 +30,43 @@ LikelihoodField::LikelihoodField(const grid::ProbabilityGrid& grid, const geomet
   limits_ = grid::MapLimits(g.resolution(),
                             g.origin() + g.resolution() * Eigen::Vector2d(min_cell.x, min_cell.y),
                             width, height);
+  // Sites only where the window overlaps the grid; the grid's outside is unknown.
   std::vector<uint8_t> is_site(static_cast<size_t>(width) * height, 0);
   const uint16_t threshold = grid::ProbabilityToValue(static_cast<float>(occupied_probability));
-  for (int y = 0; y < height; ++y) {
-    for (int x = 0; x < width; ++x) {
-      const uint16_t v = grid.value({min_cell.x + x, min_cell.y + y}) & grid::kMaxValue;
-      is_site[static_cast<size_t>(y) * width + x] = v != grid::kUnknownValue && v > threshold;
+  const int x_begin = std::max(0, -min_cell.x), x_end = std::min(width, g.width() - min_cell.x);
+  const int y_begin = std::max(0, -min_cell.y), y_end = std::min(height, g.height() - min_cell.y);
+  const std::vector<uint16_t>& grid_values = grid.values();
+  for (int y = y_begin; y < y_end; ++y) {
+    const uint16_t* grid_row =
+        grid_values.data() + static_cast<size_t>(min_cell.y + y) * g.width() + min_cell.x;
+    uint8_t* site_row = is_site.data() + static_cast<size_t>(y) * width;
+    for (int x = x_begin; x < x_end; ++x) {
+      const uint16_t v = grid_row[x] & grid::kMaxValue;
+      site_row[x] = v != grid::kUnknownValue && v > threshold;
     }
   }
   values_ = grid::SquaredDistanceToNearestSite(is_site, width, height);
+  // Squared distances between cell centres are whole numbers of cells², so
+  // the values of the small ones are tabulated (until they round to 0 as
+  // floats, or at most kMaxTabulated), the rest computed alike.
+  constexpr int kMaxTabulated = 4096;
   const double factor = -g.resolution() * g.resolution() / (2.0 * sigma_m * sigma_m);
-  for (float& v : values_) v = std::isfinite(v) ? static_cast<float>(std::exp(factor * v)) : 0.0f;
+  const auto field_value = [factor](double squared_cells) {
+    return static_cast<float>(std::exp(factor * squared_cells));
+  };
+  std::vector<float> by_squared_distance;
+  for (int d2 = 0; d2 < kMaxTabulated && field_value(d2) != 0.0f; ++d2) {
+    by_squared_distance.push_back(field_value(d2));
+  }
+  const bool tail_is_zero = by_squared_distance.size() < static_cast<size_t>(kMaxTabulated);
+  const float tabulated = static_cast<float>(by_squared_distance.size());
+  for (float& v : values_) {
+    if (v < tabulated) {
+      v = by_squared_distance[static_cast<size_t>(v)];
+    } else {
+      v = tail_is_zero || !std::isfinite(v) ? 0.0f : field_value(v);
+    }
+  }
 }
 
 }  // namespace scout::slam

@@ -62,6 +62,16 @@ TEST(LikelihoodFieldTest, ScoresTheDistanceToTheNearestWallWhateverLiesBetween) 
   // A free cell ten cells from the nearest wall: as far as unknown space.
   EXPECT_NEAR(Residual(field, CellCentre(10, 20)), expected(10 * kResolution), 1e-6);
   EXPECT_GT(Residual(field, CellCentre(10, 20)), 0.999);
+  // A wide spread: distances beyond the tabulated ones (4096 cells²) alike.
+  const double wide_sigma = 5.0;
+  const LikelihoodField wide(grid, Rigid2d(), corners, 3.0, wide_sigma, 0.5);
+  const auto expected_wide = [&](double distance_m) {
+    return 1.0 - std::exp(-distance_m * distance_m / (2.0 * wide_sigma * wide_sigma));
+  };
+  EXPECT_NEAR(Residual(wide, CellCentre(13, 10)), expected_wide(3 * kResolution), 1e-6);
+  // 80 and 70 cells from the wall at (30, 30), inside the window: 11300 cells².
+  EXPECT_NEAR(Residual(wide, CellCentre(-50, 100)), expected_wide(std::sqrt(11300.0) * kResolution),
+              1e-6);
   // With walls only above 0.6, the cell at 0.54 is no wall.
   const LikelihoodField strict(grid, Rigid2d(), corners, 0.5, kSigma, 0.6);
   EXPECT_GT(Residual(strict, CellCentre(30, 30)), 0.999);
