@@ -155,7 +155,7 @@ slam::SlamOptions EffectiveSlamOptions(const ExplorationOptions& options) {
   slam.local.use_online_correlative_scan_matching = l.use_online_correlative_scan_matching;
   slam.local.ceres_scan_matcher.translation_weight = l.translation_weight;
   slam.local.ceres_scan_matcher.rotation_weight = l.rotation_weight;
-  slam.local.ceres_scan_matcher.likelihood_field_sigma_m = l.likelihood_field_sigma_m;
+  slam.local.ceres_scan_matcher.likelihood_field.sigma_m = l.likelihood_field_sigma_m;
   if (options.explore.synchronous_slam) {
     slam.pose_graph.synchronous = true;
     slam.pose_graph.synchronous_solve_delay_nodes = options.explore.solve_delay_nodes;

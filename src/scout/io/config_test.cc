@@ -68,14 +68,14 @@ TEST_F(ConfigTest, SlamSectionOfTheDefaultFileMatchesTheBuiltInDefaults) {
                    d.local.ceres_scan_matcher.unknown_probability);
   EXPECT_DOUBLE_EQ(c.local.real_time_correlative_scan_matcher.unknown_probability,
                    d.local.real_time_correlative_scan_matcher.unknown_probability);
-  EXPECT_DOUBLE_EQ(c.local.ceres_scan_matcher.likelihood_field_sigma_m,
-                   d.local.ceres_scan_matcher.likelihood_field_sigma_m);
-  EXPECT_DOUBLE_EQ(c.local.ceres_scan_matcher.likelihood_field_occupied_probability,
-                   d.local.ceres_scan_matcher.likelihood_field_occupied_probability);
-  EXPECT_DOUBLE_EQ(c.local.real_time_correlative_scan_matcher.likelihood_field_sigma_m,
-                   d.local.real_time_correlative_scan_matcher.likelihood_field_sigma_m);
-  EXPECT_DOUBLE_EQ(c.pose_graph.constraint_builder.ceres_scan_matcher.likelihood_field_sigma_m,
-                   d.pose_graph.constraint_builder.ceres_scan_matcher.likelihood_field_sigma_m);
+  EXPECT_DOUBLE_EQ(c.local.ceres_scan_matcher.likelihood_field.sigma_m,
+                   d.local.ceres_scan_matcher.likelihood_field.sigma_m);
+  EXPECT_DOUBLE_EQ(c.local.ceres_scan_matcher.likelihood_field.occupied_probability,
+                   d.local.ceres_scan_matcher.likelihood_field.occupied_probability);
+  EXPECT_DOUBLE_EQ(c.local.real_time_correlative_scan_matcher.likelihood_field.sigma_m,
+                   d.local.real_time_correlative_scan_matcher.likelihood_field.sigma_m);
+  EXPECT_DOUBLE_EQ(c.pose_graph.constraint_builder.ceres_scan_matcher.likelihood_field.sigma_m,
+                   d.pose_graph.constraint_builder.ceres_scan_matcher.likelihood_field.sigma_m);
   const slam::ConstraintBuilderOptions& cb = c.pose_graph.constraint_builder;
   const slam::ConstraintBuilderOptions& db = d.pose_graph.constraint_builder;
   EXPECT_DOUBLE_EQ(cb.min_overlap, db.min_overlap);
@@ -136,11 +136,11 @@ TEST_F(ConfigTest, SlamValuesOverrideDefaultsAndErrorsNameTheKey) {
   const ScoutConfig field = LoadConfig(
       Write("slam:\n  local:\n    ceres_scan_matcher:\n      likelihood_field_sigma_m: 0\n"
             "      likelihood_field_occupied_probability: 0.6\n"));
-  EXPECT_EQ(field.slam.local.ceres_scan_matcher.likelihood_field_sigma_m, 0.0);
-  EXPECT_DOUBLE_EQ(field.slam.local.ceres_scan_matcher.likelihood_field_occupied_probability, 0.6);
+  EXPECT_EQ(field.slam.local.ceres_scan_matcher.likelihood_field.sigma_m, 0.0);
+  EXPECT_DOUBLE_EQ(field.slam.local.ceres_scan_matcher.likelihood_field.occupied_probability, 0.6);
   EXPECT_DOUBLE_EQ(LoadConfig(Write("slam:\n  local:\n    real_time_correlative_scan_matcher:\n"
                                     "      likelihood_field_sigma_m: 0.06\n"))
-                       .slam.local.real_time_correlative_scan_matcher.likelihood_field_sigma_m,
+                       .slam.local.real_time_correlative_scan_matcher.likelihood_field.sigma_m,
                    0.06);
   e = ErrorOf(
       "slam:\n  local:\n    real_time_correlative_scan_matcher:\n"

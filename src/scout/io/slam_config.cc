@@ -35,6 +35,12 @@ void ReadAdaptiveVoxelFilter(YamlSection s, slam::AdaptiveVoxelFilterOptions* o)
   s.RejectUnknownKeys();
 }
 
+// The likelihood field's keys of a scan matcher's section.
+void ReadLikelihoodField(YamlSection& s, slam::LikelihoodFieldOptions* o) {
+  s.ReadNonNegative("likelihood_field_sigma_m", &o->sigma_m);
+  ReadGridProbability(s, "likelihood_field_occupied_probability", &o->occupied_probability);
+}
+
 void ReadCeresScanMatcher(YamlSection s, slam::CeresScanMatcherOptions* o) {
   s.ReadPositive("occupied_space_weight", &o->occupied_space_weight);
   s.ReadNonNegative("translation_weight", &o->translation_weight);
@@ -42,9 +48,7 @@ void ReadCeresScanMatcher(YamlSection s, slam::CeresScanMatcherOptions* o) {
   s.ReadInt("max_num_iterations", &o->max_num_iterations, 1);
   s.ReadInt("full_weight_num_points", &o->full_weight_num_points, 0);
   ReadGridProbability(s, "unknown_probability", &o->unknown_probability);
-  s.ReadNonNegative("likelihood_field_sigma_m", &o->likelihood_field_sigma_m);
-  ReadGridProbability(s, "likelihood_field_occupied_probability",
-                      &o->likelihood_field_occupied_probability);
+  ReadLikelihoodField(s, &o->likelihood_field);
   s.RejectUnknownKeys();
 }
 
@@ -68,9 +72,7 @@ void ReadLocal(YamlSection s, slam::LocalSlamOptions* o) {
     c.ReadNonNegative("translation_delta_cost_weight", &m.translation_delta_cost_weight);
     c.ReadNonNegative("rotation_delta_cost_weight", &m.rotation_delta_cost_weight);
     ReadGridProbability(c, "unknown_probability", &m.unknown_probability);
-    c.ReadNonNegative("likelihood_field_sigma_m", &m.likelihood_field_sigma_m);
-    ReadGridProbability(c, "likelihood_field_occupied_probability",
-                        &m.likelihood_field_occupied_probability);
+    ReadLikelihoodField(c, &m.likelihood_field);
     c.RejectUnknownKeys();
   }
   ReadCeresScanMatcher(s.Section("ceres_scan_matcher"), &o->ceres_scan_matcher);

@@ -58,14 +58,11 @@ void Validate(const CeresScanMatcherOptions& options) {
                    "unknown_probability", options.unknown_probability, "in [0.1, 0.9]");
   CheckCeresOption(options.full_weight_num_points >= 0, "full_weight_num_points",
                    options.full_weight_num_points, ">= 0");
-  CheckCeresOption(
-      options.likelihood_field_sigma_m >= 0.0 && std::isfinite(options.likelihood_field_sigma_m),
-      "likelihood_field_sigma_m", options.likelihood_field_sigma_m, "finite and >= 0");
-  CheckCeresOption(
-      options.likelihood_field_occupied_probability >= grid::kMinProbability - 1e-6 &&
-          options.likelihood_field_occupied_probability <= grid::kMaxProbability + 1e-6,
-      "likelihood_field_occupied_probability", options.likelihood_field_occupied_probability,
-      "in [0.1, 0.9]");
+  try {
+    Validate(options.likelihood_field);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(std::string("ceres_scan_matcher.") + e.what());
+  }
   CheckCeresOption(options.max_num_iterations >= 1, "max_num_iterations",
                    options.max_num_iterations, ">= 1");
 }
@@ -86,12 +83,11 @@ geometry::Rigid2d CeresScanMatcher::Match(const Eigen::Vector2d& target_translat
       std::max(points.size(), static_cast<size_t>(options_.full_weight_num_points));
   const double scale = options_.occupied_space_weight / std::sqrt(num_points_for_weight);
   std::optional<LikelihoodField> field;
-  if (options_.likelihood_field_sigma_m > 0.0) {
+  if (options_.likelihood_field.sigma_m > 0.0) {
     // The field around the scan as first placed: beyond 3 sigma of the walls
     // it is flat, and the solve moves a scan far less than 0.5 m.
     field.emplace(grid, initial_pose_estimate, points,
-                  0.5 + 3.0 * options_.likelihood_field_sigma_m, options_.likelihood_field_sigma_m,
-                  options_.likelihood_field_occupied_probability);
+                  0.5 + 3.0 * options_.likelihood_field.sigma_m, options_.likelihood_field);
     problem.AddResidualBlock(new LikelihoodFieldCost(scale, points, *field), nullptr, pose);
   } else {
     problem.AddResidualBlock(

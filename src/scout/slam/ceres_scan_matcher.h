@@ -5,6 +5,7 @@
 
 #include "scout/geometry/rigid_transform.h"
 #include "scout/grid/probability_grid.h"
+#include "scout/slam/likelihood_field_cost.h"
 #include "scout/slam/point_cloud.h"
 
 namespace scout::slam {
@@ -32,16 +33,14 @@ struct CeresScanMatcherOptions {
   // behind at 0.1, 1.7 cm at 0.5; fr079 ATE 0.093 vs 0.092 m). In [kMinProbability,
   // kMaxProbability].
   double unknown_probability = 0.5;
-  // > 0: the residuals read the grid's likelihood field of this spread
+  // sigma_m > 0: the residuals read the grid's likelihood field
   // (likelihood_field_cost.h) instead of its probabilities, and
   // unknown_probability is unused. A wall seen once scores 0.55 and unknown
   // space 0.5 in the probabilities, so on logs of sparse scans the matcher
   // hardly tells them apart and slides scans into unexplored space (aces comes
   // out 3 % too long with exact odometry); the field scores the distance to
-  // the nearest wall, whatever lies between. 0 = the probabilities.
-  double likelihood_field_sigma_m = 0.0;
-  // Cells above this probability are the field's walls.
-  double likelihood_field_occupied_probability = 0.5;
+  // the nearest wall, whatever lies between.
+  LikelihoodFieldOptions likelihood_field;
 };
 
 // Throws std::invalid_argument naming the first invalid option.
@@ -51,7 +50,7 @@ void Validate(const CeresScanMatcherOptions& options);
 // residual (occupied_space_weight / sqrt(N)) * (1 - p(T * point)) per point,
 // with p the bicubically interpolated probability of the grid (unknown cells
 // and the outside of the grid count as options.unknown_probability) or, with
-// likelihood_field_sigma_m > 0, its likelihood field.
+// likelihood_field.sigma_m > 0, its likelihood field.
 class CeresScanMatcher {
  public:
   // Throws std::invalid_argument on invalid options.

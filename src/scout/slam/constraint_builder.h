@@ -116,7 +116,8 @@ struct ConstraintBuilderOptions {
                                              .translation_weight = 10.0,
                                              .rotation_weight = 1.0,
                                              .max_num_iterations = 10,
-                                             .unknown_probability = 0.1};
+                                             .unknown_probability = 0.1,
+                                             .likelihood_field = {}};  // probabilities
 };
 
 // Throws std::invalid_argument naming the option when one is out of range.

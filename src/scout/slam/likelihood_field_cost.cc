@@ -3,15 +3,31 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <stdexcept>
+#include <string>
 
+#include "scout/common/format.h"
 #include "scout/grid/distance_transform.h"
 #include "scout/grid/probability_values.h"
 
 namespace scout::slam {
 
+void Validate(const LikelihoodFieldOptions& options) {
+  if (!(options.sigma_m >= 0.0) || !std::isfinite(options.sigma_m)) {
+    throw std::invalid_argument("likelihood_field_sigma_m must be finite and >= 0, got " +
+                                FormatNumber(options.sigma_m));
+  }
+  if (!(options.occupied_probability >= grid::kMinProbability - 1e-6 &&
+        options.occupied_probability <= grid::kMaxProbability + 1e-6)) {
+    throw std::invalid_argument(
+        "likelihood_field_occupied_probability must be in [0.1, 0.9], got " +
+        FormatNumber(options.occupied_probability));
+  }
+}
+
 LikelihoodField::LikelihoodField(const grid::ProbabilityGrid& grid, const geometry::Rigid2d& pose,
-                                 const PointCloud& points, double margin_m, double sigma_m,
-                                 double occupied_probability) {
+                                 const PointCloud& points, double margin_m,
+                                 const LikelihoodFieldOptions& options) {
   const grid::MapLimits& g = grid.limits();
   if (points.empty()) {
     limits_ = grid::MapLimits(g.resolution(), g.origin(), 0, 0);
@@ -32,7 +48,8 @@ LikelihoodField::LikelihoodField(const grid::ProbabilityGrid& grid, const geomet
                             width, height);
   // Sites only where the window overlaps the grid; the grid's outside is unknown.
   std::vector<uint8_t> is_site(static_cast<size_t>(width) * height, 0);
-  const uint16_t threshold = grid::ProbabilityToValue(static_cast<float>(occupied_probability));
+  const uint16_t threshold =
+      grid::ProbabilityToValue(static_cast<float>(options.occupied_probability));
   const int x_begin = std::max(0, -min_cell.x), x_end = std::min(width, g.width() - min_cell.x);
   const int y_begin = std::max(0, -min_cell.y), y_end = std::min(height, g.height() - min_cell.y);
   const std::vector<uint16_t>& grid_values = grid.values();
@@ -50,7 +67,8 @@ LikelihoodField::LikelihoodField(const grid::ProbabilityGrid& grid, const geomet
   // the values of the small ones are tabulated (until they round to 0 as
   // floats, or at most kMaxTabulated), the rest computed alike.
   constexpr int kMaxTabulated = 4096;
-  const double factor = -g.resolution() * g.resolution() / (2.0 * sigma_m * sigma_m);
+  const double factor =
+      -g.resolution() * g.resolution() / (2.0 * options.sigma_m * options.sigma_m);
   const auto field_value = [factor](double squared_cells) {
     return static_cast<float>(std::exp(factor * squared_cells));
   };

@@ -48,7 +48,7 @@ TEST(LikelihoodFieldTest, ScoresTheDistanceToTheNearestWallWhateverLiesBetween) 
   const grid::ProbabilityGrid grid = HandBuiltGrid();
   // The window around the whole grid.
   const PointCloud corners = {{0.0, 0.0}, {2.0, 2.0}};
-  const LikelihoodField field(grid, Rigid2d(), corners, 0.5, kSigma, 0.5);
+  const LikelihoodField field(grid, Rigid2d(), corners, 0.5, {kSigma, 0.5});
   const auto expected = [](double distance_m) {
     return 1.0 - std::exp(-distance_m * distance_m / (2.0 * kSigma * kSigma));
   };
@@ -64,7 +64,7 @@ TEST(LikelihoodFieldTest, ScoresTheDistanceToTheNearestWallWhateverLiesBetween) 
   EXPECT_GT(Residual(field, CellCentre(10, 20)), 0.999);
   // A wide spread: distances beyond the tabulated ones (4096 cells²) alike.
   const double wide_sigma = 5.0;
-  const LikelihoodField wide(grid, Rigid2d(), corners, 3.0, wide_sigma, 0.5);
+  const LikelihoodField wide(grid, Rigid2d(), corners, 3.0, {wide_sigma, 0.5});
   const auto expected_wide = [&](double distance_m) {
     return 1.0 - std::exp(-distance_m * distance_m / (2.0 * wide_sigma * wide_sigma));
   };
@@ -73,7 +73,7 @@ TEST(LikelihoodFieldTest, ScoresTheDistanceToTheNearestWallWhateverLiesBetween) 
   EXPECT_NEAR(Residual(wide, CellCentre(-50, 100)), expected_wide(std::sqrt(11300.0) * kResolution),
               1e-6);
   // With walls only above 0.6, the cell at 0.54 is no wall.
-  const LikelihoodField strict(grid, Rigid2d(), corners, 0.5, kSigma, 0.6);
+  const LikelihoodField strict(grid, Rigid2d(), corners, 0.5, {kSigma, 0.6});
   EXPECT_GT(Residual(strict, CellCentre(30, 30)), 0.999);
   EXPECT_NEAR(Residual(strict, CellCentre(10, 10)), 0.0, 1e-6);
 }
@@ -83,12 +83,12 @@ TEST(LikelihoodFieldTest, AGridWithoutWallsAndTheOutsideOfTheWindowScoreNothing)
   grid.SetProbability({5, 5}, 0.45f);
   grid.FinishUpdate();
   const PointCloud points = {{0.2, 0.2}};
-  const LikelihoodField field(grid, Rigid2d(), points, 0.2, kSigma, 0.5);
+  const LikelihoodField field(grid, Rigid2d(), points, 0.2, {kSigma, 0.5});
   EXPECT_DOUBLE_EQ(Residual(field, {0.2, 0.2}), 1.0);
   // Outside the window: as far from walls as can be.
   EXPECT_DOUBLE_EQ(Residual(field, {-5.0, 3.0}), 1.0);
   // Without points there is no window.
-  const LikelihoodField none(HandBuiltGrid(), Rigid2d(), {}, 0.5, kSigma, 0.5);
+  const LikelihoodField none(HandBuiltGrid(), Rigid2d(), {}, 0.5, {kSigma, 0.5});
   EXPECT_EQ(none.limits().num_cells(), 0);
   EXPECT_DOUBLE_EQ(Residual(none, CellCentre(10, 10)), 1.0);
 }
@@ -97,7 +97,7 @@ TEST(LikelihoodFieldCostTest, JacobianEqualsCentralDifferences) {
   const grid::ProbabilityGrid grid = testing::RoomGrid();
   const Rigid2d truth(0.3, -0.2, -0.4);
   const PointCloud points = testing::ScanPoints(testing::Room(), truth);
-  const LikelihoodField field(grid, truth, points, 1.0, kSigma, 0.5);
+  const LikelihoodField field(grid, truth, points, 1.0, {kSigma, 0.5});
   const double scale = 1.0 / std::sqrt(static_cast<double>(points.size()));
   const LikelihoodFieldCost cost(scale, points, field);
   ASSERT_EQ(cost.num_residuals(), static_cast<int>(points.size()));

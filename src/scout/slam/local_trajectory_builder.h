@@ -56,7 +56,7 @@ struct LocalSlamOptions {
                                              .translation_weight = 1.0,
                                              .rotation_weight = 1.0,
                                              .max_num_iterations = 20,
-                                             .likelihood_field_sigma_m = 0.06};
+                                             .likelihood_field = {.sigma_m = 0.06}};
   // Which matched scans are inserted into the submaps.
   sensor::MotionFilterOptions motion_filter;
   // Resolution 0.05 m, 70 scans, insertion hit 0.55 / miss 0.49.

@@ -167,7 +167,7 @@ double CorridorLagM(int beams) {
   options.use_online_correlative_scan_matching = false;
   options.ceres_scan_matcher.translation_weight = 5.0;
   options.ceres_scan_matcher.rotation_weight = 10.0;
-  options.ceres_scan_matcher.likelihood_field_sigma_m = 0.0;
+  options.ceres_scan_matcher.likelihood_field.sigma_m = 0.0;
   LocalTrajectoryBuilder builder(options);
   const double speed_mps = 0.5;
   const int steps = 800;

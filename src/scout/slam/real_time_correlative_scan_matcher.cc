@@ -11,7 +11,6 @@
 #include "scout/common/format.h"
 #include "scout/grid/probability_values.h"
 #include "scout/slam/fast_correlative_scan_matcher.h"
-#include "scout/slam/likelihood_field_cost.h"
 
 namespace scout::slam {
 namespace {
@@ -40,13 +39,11 @@ void Validate(const RealTimeCorrelativeScanMatcherOptions& options) {
   CheckOption(options.unknown_probability >= grid::kMinProbability - 1e-6 &&
                   options.unknown_probability <= grid::kMaxProbability + 1e-6,
               "unknown_probability", options.unknown_probability, "in [0.1, 0.9]");
-  CheckOption(
-      options.likelihood_field_sigma_m >= 0.0 && std::isfinite(options.likelihood_field_sigma_m),
-      "likelihood_field_sigma_m", options.likelihood_field_sigma_m, "finite and >= 0");
-  CheckOption(options.likelihood_field_occupied_probability >= grid::kMinProbability - 1e-6 &&
-                  options.likelihood_field_occupied_probability <= grid::kMaxProbability + 1e-6,
-              "likelihood_field_occupied_probability",
-              options.likelihood_field_occupied_probability, "in [0.1, 0.9]");
+  try {
+    Validate(options.likelihood_field);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(std::string("real_time_correlative_scan_matcher.") + e.what());
+  }
 }
 
 RealTimeCorrelativeScanMatcher::RealTimeCorrelativeScanMatcher(
@@ -106,15 +103,14 @@ ScanMatchResult RealTimeCorrelativeScanMatcher::Match(
     }
   };
 
-  if (options_.likelihood_field_sigma_m > 0.0) {
+  if (options_.likelihood_field.sigma_m > 0.0) {
     // Every candidate's points lie within the arc the window turns the
     // farthest one through, and the linear window, of the initial placement.
     const double margin_m = max_range_m * options_.angular_search_window_rad +
                             options_.linear_search_window_m +
-                            3.0 * options_.likelihood_field_sigma_m + resolution;
+                            3.0 * options_.likelihood_field.sigma_m + resolution;
     const LikelihoodField field(grid, initial_pose_estimate, points, margin_m,
-                                options_.likelihood_field_sigma_m,
-                                options_.likelihood_field_occupied_probability);
+                                options_.likelihood_field);
     const grid::MapLimits& window = field.limits();
     std::vector<grid::CellIndex> window_cells(points.size());
     for (int k = -num_angles_each_side; k <= num_angles_each_side; ++k) {

@@ -5,6 +5,7 @@
 
 #include "scout/geometry/rigid_transform.h"
 #include "scout/grid/probability_grid.h"
+#include "scout/slam/likelihood_field_cost.h"
 #include "scout/slam/point_cloud.h"
 #include "scout/slam/scan_match_result.h"
 
@@ -21,15 +22,13 @@ struct RealTimeCorrelativeScanMatcherOptions {
   // Probability that unknown cells (and the grid's outside) score; see
   // CeresScanMatcherOptions::unknown_probability. In [0.1, 0.9].
   double unknown_probability = 0.5;
-  // > 0: candidates score the mean of the grid's likelihood field of this
-  // spread under their points (likelihood_field_cost.h) instead of the mean
-  // probability; its walls are the cells above the occupied probability.
-  // 0 = the probabilities. Off by default: at 6 cm the eight Radish logs'
+  // sigma_m > 0: candidates score the mean of the grid's likelihood field
+  // under their points (likelihood_field_cost.h) instead of the mean
+  // probability. Off by default: at 6 cm the eight Radish logs'
   // worst ATE over seeds 1-6 fell from 0.83 to 0.21 m (csail no longer
   // breaks), but the fr079 bag went from 0.079 to 0.084 m and its
   // synchronous replay from 22 to 33 s (docs/EXPERIMENTS.md).
-  double likelihood_field_sigma_m = 0.0;
-  double likelihood_field_occupied_probability = 0.5;
+  LikelihoodFieldOptions likelihood_field;
 };
 
 // Throws std::invalid_argument naming the first invalid option.

@@ -73,7 +73,7 @@ TEST(CeresScanMatcherTest, RecoversKnownOffsetOnRoomGrid) {
 
 TEST(CeresScanMatcherTest, RecoversKnownOffsetOnRoomGridFromItsLikelihoodField) {
   CeresScanMatcherOptions options;
-  options.likelihood_field_sigma_m = 0.06;
+  options.likelihood_field.sigma_m = 0.06;
   ExpectRecoversKnownOffsetOnRoomGrid(options);
 }
 
@@ -175,12 +175,12 @@ TEST(CeresScanMatcherTest, RejectsInvalidOptions) {
   options.full_weight_num_points = -1;
   EXPECT_THROW(CeresScanMatcher{options}, std::invalid_argument);
   options = {};
-  options.likelihood_field_sigma_m = -0.1;
+  options.likelihood_field.sigma_m = -0.1;
   EXPECT_THROW(CeresScanMatcher{options}, std::invalid_argument);
-  options.likelihood_field_sigma_m = std::nan("");
+  options.likelihood_field.sigma_m = std::nan("");
   EXPECT_THROW(CeresScanMatcher{options}, std::invalid_argument);
   options = {};
-  options.likelihood_field_occupied_probability = 0.95;
+  options.likelihood_field.occupied_probability = 0.95;
   EXPECT_THROW(CeresScanMatcher{options}, std::invalid_argument);
 }
 
@@ -201,7 +201,13 @@ TEST(RealTimeCorrelativeScanMatcherTest, RecoversOffsetWithinWindow) {
   EXPECT_GT(result.score, 0.6);
   // The refined pose must score better than the initial estimate.
   const ScanMatchResult at_initial =
-      RealTimeCorrelativeScanMatcher({0.0, 0.0, 0.1, 0.1}).Match(initial, points, grid);
+      RealTimeCorrelativeScanMatcher({.linear_search_window_m = 0.0,
+                                      .angular_search_window_rad = 0.0,
+                                      .translation_delta_cost_weight = 0.1,
+                                      .rotation_delta_cost_weight = 0.1,
+                                      .unknown_probability = 0.5,
+                                      .likelihood_field = {}})
+          .Match(initial, points, grid);
   EXPECT_EQ(at_initial.pose.translation(), initial.translation());
   EXPECT_LT(at_initial.score, result.score - 0.1);
 }
@@ -212,7 +218,7 @@ TEST(RealTimeCorrelativeScanMatcherTest, RecoversOffsetWithinWindowOnTheLikeliho
   const PointCloud points = testing::ScanPoints(testing::Room(), truth);
   const Rigid2d initial(truth.x() + 0.08, truth.y() - 0.07, truth.theta() - 0.2);
   RealTimeCorrelativeScanMatcherOptions options;
-  options.likelihood_field_sigma_m = 0.06;
+  options.likelihood_field.sigma_m = 0.06;
   const ScanMatchResult result =
       RealTimeCorrelativeScanMatcher(options).Match(initial, points, grid);
   EXPECT_LT((result.pose.translation() - truth.translation()).norm(), 0.05) << result.pose;
@@ -254,10 +260,10 @@ TEST(RealTimeCorrelativeScanMatcherTest, EmptyScanAndInvalidOptions) {
   options.angular_search_window_rad = 4.0;
   EXPECT_THROW(RealTimeCorrelativeScanMatcher{options}, std::invalid_argument);
   options = {};
-  options.likelihood_field_sigma_m = -1.0;
+  options.likelihood_field.sigma_m = -1.0;
   EXPECT_THROW(RealTimeCorrelativeScanMatcher{options}, std::invalid_argument);
   options = {};
-  options.likelihood_field_occupied_probability = 0.05;
+  options.likelihood_field.occupied_probability = 0.05;
   EXPECT_THROW(RealTimeCorrelativeScanMatcher{options}, std::invalid_argument);
 }
 
