@@ -105,11 +105,14 @@ TEST_F(ScoutCli, BadInputsNameWhatIsWrongAndLeaveNoOutputs) {
       r.output.find("--picture-strategy 'exact': not among the strategies that run (full,bfs)"),
       std::string::npos)
       << r.output;
-  r = RunScout("frontier-bench --epsilon -1 --world office" + o);
-  EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.output.find("--epsilon: expected a positive number of metres, got -1"),
-            std::string::npos)
-      << r.output;
+  for (const std::string bad : {"-1", "0", "abc", "nan"}) {
+    r = RunScout("frontier-bench --epsilon " + bad + " --world office" + o);
+    EXPECT_EQ(r.exit_code, 2) << bad;
+    EXPECT_NE(
+        r.output.find("--epsilon: expected a positive finite number of metres, got '" + bad + "'"),
+        std::string::npos)
+        << r.output;
+  }
   scout::WriteTextFileAtomically(dir_ / "bad.yaml", "frontier:\n  inflation_radius: 0.3\n");
   r = RunScout("frontier-bench --config " + (dir_ / "bad.yaml").string() + o);
   EXPECT_EQ(r.exit_code, 2);

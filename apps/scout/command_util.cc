@@ -56,6 +56,22 @@ CLI::Validator NonNegativeFiniteNumber(double max) {
       "NONNEGATIVE");
 }
 
+CLI::Validator PositiveFiniteNumber(const std::string& unit) {
+  return CLI::Validator(
+      [unit](std::string& value) -> std::string {
+        const char* begin = value.c_str();
+        char* end = nullptr;
+        errno = 0;
+        const double x = std::strtod(begin, &end);
+        if (!value.empty() && end == begin + value.size() && errno == 0 && std::isfinite(x) &&
+            x > 0.0) {
+          return std::string();
+        }
+        return "expected a positive finite number of " + unit + ", got '" + value + "'";
+      },
+      "POSITIVE");
+}
+
 std::vector<std::string> SplitList(const std::string& list, const std::string& option) {
   std::vector<std::string> items;
   std::stringstream ss(list);

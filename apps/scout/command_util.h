@@ -30,6 +30,10 @@ CLI::Validator NonNegativeInteger(uint64_t max = std::numeric_limits<uint64_t>::
 // DBL_MAX.
 CLI::Validator NonNegativeFiniteNumber(double max = std::numeric_limits<double>::max());
 
+// Accepts a finite decimal number > 0, named in the message by its unit
+// ("seconds"): left to CLI11, "abc" reads "Could not convert: --opt = abc".
+CLI::Validator PositiveFiniteNumber(const std::string& unit);
+
 // Splits the comma-separated list given as 'option'. Throws InputError naming
 // the option when an item is empty ("exact,", ",exact", "full,,exact"): a
 // name left out by a typo must not pass silently.

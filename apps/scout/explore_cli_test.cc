@@ -91,10 +91,12 @@ TEST_F(ExploreCli, BadInputsNameWhatIsWrongAndLeaveNoOutputs) {
   EXPECT_EQ(r.exit_code, 2);
   r = RunScout("explore --goals random" + rooms + o);
   EXPECT_EQ(r.exit_code, 2);
-  for (const std::string bad : {"-5", "inf", "nan"}) {
+  for (const std::string bad : {"-5", "inf", "nan", "abc", "10s"}) {
     r = RunScout("explore --max-sim-time " + bad + rooms + o);
     EXPECT_EQ(r.exit_code, 2) << bad;
-    EXPECT_NE(r.output.find("--max-sim-time: expected a positive finite number"), std::string::npos)
+    EXPECT_NE(r.output.find("--max-sim-time: expected a positive finite number of seconds, got '" +
+                            bad + "'"),
+              std::string::npos)
         << r.output;
   }
   scout::WriteTextFileAtomically(dir_ / "contradictory.yaml",

@@ -41,13 +41,7 @@ exploration::ExplorationOptions MakeOptions(const ExploreArgs& args) {
       ExplorationOptionsFrom(LoadConfigOrDefaults(args.config_file));
   o.explore.strategy = args.strategy;
   o.explore.goal_policy = args.goals;
-  if (args.max_sim_time_s) {
-    if (!(*args.max_sim_time_s > 0.0) || !std::isfinite(*args.max_sim_time_s)) {
-      throw InputError("--max-sim-time: expected a positive finite number of seconds, got " +
-                       FormatNumber(*args.max_sim_time_s));
-    }
-    o.explore.max_sim_time_s = *args.max_sim_time_s;
-  }
+  if (args.max_sim_time_s) o.explore.max_sim_time_s = *args.max_sim_time_s;
   if (args.start) o.start = ParsePoint(*args.start, "--start");
   try {
     exploration::CheckExplorationOptions(o);
@@ -290,7 +284,8 @@ CLI::App* AddExploreCommand(CLI::App& app, ExploreArgs* args) {
       ->check(CLI::IsMember({"scout", "nearest", "explore-lite", "meanshift-centres"}))
       ->capture_default_str();
   cmd->add_option("--max-sim-time", args->max_sim_time_s,
-                  "stop after this much simulated time, seconds (default: explore.max_sim_time_s)");
+                  "stop after this much simulated time, seconds (default: explore.max_sim_time_s)")
+      ->check(PositiveFiniteNumber("seconds"));
   cmd->add_option("--start", args->start, "start position X,Y in metres (default: the world's)");
   cmd->add_flag("--quiet", args->quiet, "print only the final summary");
   cmd->add_flag("--record-log", args->record_log,

@@ -39,7 +39,8 @@ CLI::App* AddFrontierBenchCommand(CLI::App& app, FrontierBenchArgs* args) {
   cmd->add_option("--out", args->out_dir, "output directory")->capture_default_str();
   cmd->add_option("--config", args->config_file, "YAML options file (see config/default.yaml)");
   cmd->add_option("--epsilon", args->epsilon_m,
-                  "bfs/direct threshold in metres (overrides frontier.epsilon_m)");
+                  "bfs/direct threshold in metres (overrides frontier.epsilon_m)")
+      ->check(PositiveFiniteNumber("metres"));
   cmd->add_option("--strategies", args->strategies, "comma-separated strategies to run")
       ->capture_default_str();
   cmd->add_option("--picture-strategy", args->picture_strategy,
@@ -55,13 +56,7 @@ CLI::App* AddFrontierBenchCommand(CLI::App& app, FrontierBenchArgs* args) {
 int RunFrontierBench(const FrontierBenchArgs& args) {
   const frontier::Stopwatch wall;
   io::ScoutConfig config = LoadConfigOrDefaults(args.config_file);
-  if (args.epsilon_m) {
-    if (!(*args.epsilon_m > 0.0) || !std::isfinite(*args.epsilon_m)) {
-      throw InputError("--epsilon: expected a positive number of metres, got " +
-                       FormatNumber(*args.epsilon_m));
-    }
-    config.frontier.epsilon_m = *args.epsilon_m;
-  }
+  if (args.epsilon_m) config.frontier.epsilon_m = *args.epsilon_m;
   const std::vector<std::string> strategies = SplitList(args.strategies, "--strategies");
   // Validates options and names before any long work or any output.
   frontier::FrontierEngine engine(config.frontier, strategies, /*evaluate=*/!args.no_reference);
