@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <vector>
 
 #include "scout/explore/option_check.h"
 #include "scout/explore/tour.h"
@@ -14,6 +16,12 @@ void Validate(const NavigationPointOptions& o) {
   CheckAtLeast("navigation_points", "connectivity_margin_m", o.connectivity_margin_m, 0.0);
   CheckAtLeast("navigation_points", "info_radius_m", o.info_radius_m, 0.0);
   CheckAtLeast("navigation_points", "info_multiplier", o.info_multiplier, 0.0);
+  CheckAtLeast("navigation_points", "info_visible_range_m", o.info_visible_range_m, 0.0);
+  if (o.info_visible_range_m > kMaxInfoVisibleRange_m) {
+    RejectOption("navigation_points", "info_visible_range_m",
+                 "at most " + std::to_string(kMaxInfoVisibleRange_m) + " m",
+                 o.info_visible_range_m);
+  }
   CheckAtLeast("navigation_points", "hysteresis_radius_m", o.hysteresis_radius_m, 0.0);
   CheckAtLeast("navigation_points", "hysteresis_gain", o.hysteresis_gain, 0.0);
   if (o.tour_points != 0 && (o.tour_points < 2 || o.tour_points > kMaxTourPoints)) {
@@ -41,6 +49,40 @@ double UnknownAreaWithin(const PlanningMap& map, const Eigen::Vector2d& p, doubl
     }
   }
   return static_cast<double>(unknown) * limits.resolution() * limits.resolution();
+}
+
+double UnknownAreaVisible(const PlanningMap& map, const Eigen::Vector2d& p, double range_m,
+                          bool outside_map_is_unknown) {
+  const grid::MapLimits& limits = map.limits();
+  const double res = limits.resolution();
+  const grid::CellIndex centre = limits.CellContaining(p);
+  const int r = static_cast<int>(std::ceil(range_m / res)) + 1;
+  const int side = 2 * r + 1;
+  std::vector<uint8_t> seen(static_cast<size_t>(side) * side, 0);
+  int64_t unknown = 0;
+  const int num_rays = 360;
+  const double step = 0.5 * res;
+  const int num_steps = static_cast<int>(range_m / step);
+  for (int k = 0; k < num_rays; ++k) {
+    const double a = 2.0 * M_PI * k / num_rays;
+    const Eigen::Vector2d d(std::cos(a), std::sin(a));
+    for (int i = 1; i <= num_steps; ++i) {
+      const grid::CellIndex c = limits.CellContaining(p + d * (step * i));
+      const int wx = c.x - centre.x + r, wy = c.y - centre.y + r;
+      if (wx < 0 || wy < 0 || wx >= side || wy >= side) break;
+      uint8_t& mark = seen[static_cast<size_t>(wy) * side + wx];
+      if (!limits.Contains(c)) {
+        if (!mark) unknown += outside_map_is_unknown;
+        mark = 1;
+        continue;
+      }
+      const grid::CellState state = map.state(limits.FlatIndex(c));
+      if (state == grid::CellState::kOccupied) break;
+      if (!mark && state == grid::CellState::kUnknown) ++unknown;
+      mark = 1;
+    }
+  }
+  return static_cast<double>(unknown) * res * res;
 }
 
 std::vector<int> SplitByConnectivity(const PlanningMap& map,
@@ -175,8 +217,11 @@ std::vector<NavigationPoint> ComputeNavigationPoints(
       np.position = points[b.index];
       np.cost_m = b.path;
       np.reached_cell = b.cell;
-      np.info_gain_m2 = UnknownAreaWithin(map, np.position, options.info_radius_m,
-                                          options.outside_map_is_unknown);
+      np.info_gain_m2 = options.info_visible_range_m > 0.0
+                            ? UnknownAreaVisible(map, np.position, options.info_visible_range_m,
+                                                 options.outside_map_is_unknown)
+                            : UnknownAreaWithin(map, np.position, options.info_radius_m,
+                                                options.outside_map_is_unknown);
       if (current_goal && (np.position - *current_goal).norm() <= options.hysteresis_radius_m) {
         np.info_gain_m2 *= options.hysteresis_gain;
       }

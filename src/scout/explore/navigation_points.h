@@ -11,6 +11,10 @@
 
 namespace scout::explore {
 
+// The longest info_visible_range_m: its rays cost range / (half a cell) steps
+// each, 360 of them per navigation point.
+inline constexpr double kMaxInfoVisibleRange_m = 20.0;
+
 // Clustering with reachability and Umari-style revenue (ALGORITHMS §6).
 struct NavigationPointOptions {
   MeanShiftOptions mean_shift;
@@ -23,6 +27,10 @@ struct NavigationPointOptions {
   double info_radius_m = 1.0;
   // Cells outside the map are never observed: count them as unknown.
   bool outside_map_is_unknown = true;
+  // > 0: info_gain = the unknown area a lidar at the point would see within
+  // this range (m): rays every degree, blocked by occupied cells, unknown and
+  // free cells let them through. 0: the disc of info_radius_m.
+  double info_visible_range_m = 0.0;
   // revenue = info_multiplier · info_gain [m²] − path cost [m]. rrt_exploration
   // (and ALGORITHMS §6) use 3; with 1 a point of the most unknown area (π m²
   // at 1 m) is worth a detour of about 3 m instead of 9, so the robot leaves
@@ -44,6 +52,11 @@ struct NavigationPointOptions {
 
 // Throws std::invalid_argument naming the key of a bad value.
 void Validate(const NavigationPointOptions& options);
+
+// The unknown area (m²) seen from 'p' within 'range_m' (see
+// NavigationPointOptions::info_visible_range_m).
+double UnknownAreaVisible(const PlanningMap& map, const Eigen::Vector2d& p, double range_m,
+                          bool outside_map_is_unknown);
 
 struct NavigationPoint {
   // One of the input frontier points (never a centroid), global frame.

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <any>
+#include <cmath>
 #include <memory>
 #include <set>
 
@@ -128,6 +129,59 @@ TEST(NavigationPointsTest, RevenuePrefersLargerUnknownAreaAtEqualCost) {
         return o;
       }());
   EXPECT_GT(sticky.front().position.x(), robot.x());
+
+  // With info_visible_range_m the gain is what a lidar at the point would
+  // see: all of the large area's 10 x 28 unknown cells (the walls stop the
+  // rays at the map's edge), and the ranking stays.
+  NavigationPointOptions visible;
+  visible.info_visible_range_m = 4.0;
+  const auto seen = ComputeNavigationPoints(map, field, b.FrontierPoints(), robot, {}, visible);
+  ASSERT_EQ(seen.size(), points.size());
+  EXPECT_EQ(seen.front().position, first.position);
+  EXPECT_DOUBLE_EQ(seen.front().info_gain_m2,
+                   UnknownAreaVisible(map, first.position, 4.0, visible.outside_map_is_unknown));
+  EXPECT_NEAR(seen.front().info_gain_m2, 2.8, 1e-9);
+  EXPECT_GT(seen.front().info_gain_m2, 1.5 * first.info_gain_m2);
+}
+
+// The unknown area a lidar at the point would see: all of an open unknown
+// disc, the disc less the shadow of a wall, and nothing when free space lies
+// between the point and the wall and unknown space only behind it. Rays count
+// the cells they touch, so the area lies between that of the range and that
+// of the range plus one cell.
+TEST(NavigationPointsTest, VisibleUnknownAreaStopsAtWalls) {
+  const double range_m = 2.0, cell_m = 0.1;
+  const auto disc_m2 = [](double r) { return M_PI * r * r; };
+  // The circular segment beyond a chord 'd' from the centre, and the rest.
+  const auto segment_m2 = [](double r, double d) {
+    return r * r * std::acos(d / r) - d * std::sqrt(r * r - d * d);
+  };
+  const auto lit_m2 = [&](double r, double d) { return disc_m2(r) - segment_m2(r, d); };
+  const auto visible = [&](const MapBuilder& b, const Eigen::Vector2d& p, double r, bool outside) {
+    return UnknownAreaVisible(PlanningMap(b.map(), TraversabilityOptions{}), p, r, outside);
+  };
+  MapBuilder open(60, 60);
+  open.Wall(0, 0, 59, 59).Fill(1, 1, 58, 58, grid::CellState::kUnknown);
+  const Eigen::Vector2d p = open.At(30, 30);
+  EXPECT_GE(visible(open, p, range_m, false), 0.97 * disc_m2(range_m));
+  EXPECT_LE(visible(open, p, range_m, false), disc_m2(range_m + cell_m));
+
+  // A wall whose near face is 0.45 m from the point.
+  MapBuilder walled = open;
+  walled.Wall(35, 1, 35, 58);
+  EXPECT_GE(visible(walled, p, range_m, false), 0.97 * lit_m2(range_m, 0.45));
+  EXPECT_LE(visible(walled, p, range_m, false), lit_m2(range_m + cell_m, 0.45));
+
+  walled.Free(1, 1, 34, 58);
+  EXPECT_EQ(visible(walled, p, range_m, false), 0.0);
+  // Outside the map counts as unknown when asked: a point 0.15 m from the
+  // edge of a free map sees the segment of the disc beyond it.
+  MapBuilder edge(30, 30);
+  edge.Free(0, 0, 29, 29);
+  EXPECT_EQ(visible(edge, edge.At(15, 15), 1.0, true), 0.0);
+  EXPECT_EQ(visible(edge, edge.At(28, 15), 1.0, false), 0.0);
+  EXPECT_GE(visible(edge, edge.At(28, 15), 1.0, true), 0.97 * segment_m2(1.0, 0.15));
+  EXPECT_LE(visible(edge, edge.At(28, 15), 1.0, true), segment_m2(1.0 + cell_m, 0.15));
 }
 
 TEST(NavigationPointsTest, ConnectivityLeaksNeitherThroughDiagonalWalls) {
@@ -223,6 +277,11 @@ TEST(NavigationPointsTest, OptionsAreValidatedByName) {
   o = {};
   o.info_radius_m = -1;
   EXPECT_THROW(Validate(o), std::invalid_argument);
+  for (const double range_m : {-1.0, 21.0, std::nan("")}) {
+    o = {};
+    o.info_visible_range_m = range_m;
+    EXPECT_THROW(Validate(o), std::invalid_argument) << range_m;
+  }
 }
 
 // Random rooms: every navigation point is an input frontier point with a path

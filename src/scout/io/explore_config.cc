@@ -92,6 +92,8 @@ void ReadPolicy(YamlSection s, explore::GoalPolicyOptions* o) {
     n.ReadNonNegativeAtMost("connectivity_margin_m", &v.connectivity_margin_m, 20.0);
     n.ReadPositiveAtMost("info_radius_m", &v.info_radius_m, 10.0);
     n.ReadBool("outside_map_is_unknown", &v.outside_map_is_unknown);
+    n.ReadNonNegativeAtMost("info_visible_range_m", &v.info_visible_range_m,
+                            explore::kMaxInfoVisibleRange_m);
     n.ReadNonNegative("info_multiplier", &v.info_multiplier);
     n.ReadNonNegativeAtMost("hysteresis_radius_m", &v.hysteresis_radius_m, 20.0);
     n.ReadPositive("hysteresis_gain", &v.hysteresis_gain);

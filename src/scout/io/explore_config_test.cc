@@ -75,6 +75,8 @@ TEST_F(ExploreConfigTest, DefaultFileMatchesTheBuiltInDefaults) {
   EXPECT_DOUBLE_EQ(c.explore.policy.navigation.info_multiplier,
                    d.explore.policy.navigation.info_multiplier);
   EXPECT_EQ(c.explore.policy.navigation.tour_points, d.explore.policy.navigation.tour_points);
+  EXPECT_DOUBLE_EQ(c.explore.policy.navigation.info_visible_range_m,
+                   d.explore.policy.navigation.info_visible_range_m);
   EXPECT_DOUBLE_EQ(c.explore.policy.explore_lite.potential_scale,
                    d.explore.policy.explore_lite.potential_scale);
   EXPECT_DOUBLE_EQ(c.robot.robot.radius_m, d.robot.robot.radius_m);
@@ -209,7 +211,9 @@ TEST_F(ExploreConfigTest, LengthsTheLoopWorksThroughHaveAnUpperBound) {
       {"explore:\n  goals:\n    guard:\n      horizon_s: 100\n",
        "'explore.goals.guard.horizon_s': expected a number in [0, 10]"},
       {"explore:\n  policy:\n    navigation:\n      info_radius_m: 1e5\n",
-       "'explore.policy.navigation.info_radius_m': expected a number in (0, 10]"}};
+       "'explore.policy.navigation.info_radius_m': expected a number in (0, 10]"},
+      {"explore:\n  policy:\n    navigation:\n      info_visible_range_m: 1e300\n",
+       "'explore.policy.navigation.info_visible_range_m': expected a number in [0, 20]"}};
   for (const auto& [yaml, expected] : cases) {
     const std::string error = ErrorOf(yaml);
     EXPECT_NE(error.find(expected), std::string::npos) << yaml << ": " << error;
