@@ -143,8 +143,7 @@ class MeanShiftCentresPolicy : public GoalPolicy {
   std::vector<GoalCandidate> Rank(const PolicyInput& in) const override {
     std::vector<GoalCandidate> goals;
     for (const Eigen::Vector2d& c : MeanShift(*in.frontier, options_.mean_shift).centres) {
-      double gain =
-          UnknownAreaWithin(*in.map, c, options_.info_radius_m, options_.outside_map_is_unknown);
+      double gain = InfoGain(*in.map, c, options_);
       if (in.current_goal && (c - *in.current_goal).norm() <= options_.hysteresis_radius_m) {
         gain *= options_.hysteresis_gain;
       }

@@ -25,10 +25,11 @@ struct SplitScene {
 
 std::vector<GoalCandidate> RankWith(std::string_view name, const MapBuilder& b,
                                     const std::vector<Eigen::Vector2d>& frontier,
-                                    const Eigen::Vector2d& robot) {
+                                    const Eigen::Vector2d& robot,
+                                    const GoalPolicyOptions& options = {}) {
   const PlanningMap map(b.map(), TraversabilityOptions{});
   const PathDistanceField field(map, robot);
-  const auto policy = MakeGoalPolicy(name, {});
+  const auto policy = MakeGoalPolicy(name, options);
   PolicyInput in;
   in.map = &map;
   in.distances = &field;
@@ -57,6 +58,26 @@ TEST(GoalPoliciesTest, MeanShiftCentreLiesInTheWallScoutsPointsDoNot) {
   for (const GoalCandidate& g : scout) {
     EXPECT_EQ(s.b.map().at(s.b.map().limits.CellContaining(g.position)), grid::CellState::kFree);
   }
+}
+
+// meanshift-centres ranks its centres with Scout's information gain, the
+// visible one included: score = gain - straight-line distance.
+TEST(GoalPoliciesTest, MeanShiftCentresScoreTheVisibleGainWhenAsked) {
+  SplitScene s;
+  const Eigen::Vector2d robot = s.b.At(10, 7);
+  GoalPolicyOptions visible;
+  visible.navigation.info_visible_range_m = 3.0;
+  const auto disc = RankWith("meanshift-centres", s.b, s.frontier, robot);
+  const auto seen = RankWith("meanshift-centres", s.b, s.frontier, robot, visible);
+  ASSERT_EQ(disc.size(), 1u);
+  ASSERT_EQ(seen.size(), 1u);
+  const PlanningMap map(s.b.map(), TraversabilityOptions{});
+  const Eigen::Vector2d c = seen[0].position;
+  EXPECT_NEAR(seen[0].score, UnknownAreaVisible(map, c, 3.0, true) - (c - robot).norm(), 1e-9);
+  EXPECT_NEAR(disc[0].score, UnknownAreaWithin(map, c, 1.0, true) - (c - robot).norm(), 1e-9);
+  // The centre lies in the wall (above): a lidar there sees nothing.
+  EXPECT_EQ(UnknownAreaVisible(map, c, 3.0, true), 0.0);
+  EXPECT_LT(seen[0].score, disc[0].score);
 }
 
 TEST(GoalPoliciesTest, ExploreLiteGoesToTheCentroidOfTheLargestSegmentEvenInAWall) {

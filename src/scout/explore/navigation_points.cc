@@ -85,6 +85,14 @@ double UnknownAreaVisible(const PlanningMap& map, const Eigen::Vector2d& p, doub
   return static_cast<double>(unknown) * res * res;
 }
 
+double InfoGain(const PlanningMap& map, const Eigen::Vector2d& p,
+                const NavigationPointOptions& options) {
+  return options.info_visible_range_m > 0.0
+             ? UnknownAreaVisible(map, p, options.info_visible_range_m,
+                                  options.outside_map_is_unknown)
+             : UnknownAreaWithin(map, p, options.info_radius_m, options.outside_map_is_unknown);
+}
+
 std::vector<int> SplitByConnectivity(const PlanningMap& map,
                                      const std::vector<Eigen::Vector2d>& points, double margin_m) {
   std::vector<int> label(points.size(), -1);
@@ -217,11 +225,7 @@ std::vector<NavigationPoint> ComputeNavigationPoints(
       np.position = points[b.index];
       np.cost_m = b.path;
       np.reached_cell = b.cell;
-      np.info_gain_m2 = options.info_visible_range_m > 0.0
-                            ? UnknownAreaVisible(map, np.position, options.info_visible_range_m,
-                                                 options.outside_map_is_unknown)
-                            : UnknownAreaWithin(map, np.position, options.info_radius_m,
-                                                options.outside_map_is_unknown);
+      np.info_gain_m2 = InfoGain(map, np.position, options);
       if (current_goal && (np.position - *current_goal).norm() <= options.hysteresis_radius_m) {
         np.info_gain_m2 *= options.hysteresis_gain;
       }

@@ -53,6 +53,12 @@ struct NavigationPointOptions {
 // Throws std::invalid_argument naming the key of a bad value.
 void Validate(const NavigationPointOptions& options);
 
+// A navigation point's information gain before hysteresis (m²): the unknown
+// area seen from 'p' within options.info_visible_range_m when that is > 0,
+// else the unknown area within options.info_radius_m.
+double InfoGain(const PlanningMap& map, const Eigen::Vector2d& p,
+                const NavigationPointOptions& options);
+
 // The unknown area (m²) seen from 'p' within 'range_m' (see
 // NavigationPointOptions::info_visible_range_m).
 double UnknownAreaVisible(const PlanningMap& map, const Eigen::Vector2d& p, double range_m,
