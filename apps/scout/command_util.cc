@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <iomanip>
 #include <limits>
+#include <optional>
 #include <sstream>
 
 #include "scout/common/error.h"
@@ -36,16 +37,27 @@ io::ScoutConfig LoadConfigOrDefaults(const std::string& config_file) {
   return config_file.empty() ? io::ScoutConfig{} : io::LoadConfig(config_file);
 }
 
+namespace {
+
+// The whole of 'value' as a finite decimal number, or nothing.
+std::optional<double> ParseFiniteNumber(const std::string& value) {
+  const char* begin = value.c_str();
+  char* end = nullptr;
+  errno = 0;
+  const double x = std::strtod(begin, &end);
+  if (value.empty() || end != begin + value.size() || errno != 0 || !std::isfinite(x)) {
+    return std::nullopt;
+  }
+  return x;
+}
+
+}  // namespace
+
 CLI::Validator NonNegativeFiniteNumber(double max) {
   return CLI::Validator(
       [max](std::string& value) -> std::string {
-        const char* begin = value.c_str();
-        char* end = nullptr;
-        errno = 0;
-        const double x = std::strtod(begin, &end);
-        const bool ok = !value.empty() && end == begin + value.size() && errno == 0 &&
-                        std::isfinite(x) && x >= 0.0 && x <= max;
-        if (ok) return std::string();
+        const std::optional<double> x = ParseFiniteNumber(value);
+        if (x && *x >= 0.0 && *x <= max) return std::string();
         if (max < std::numeric_limits<double>::max()) {
           std::ostringstream range;
           range << "expected a number from 0 to " << max << ", got '" << value << "'";
@@ -59,14 +71,8 @@ CLI::Validator NonNegativeFiniteNumber(double max) {
 CLI::Validator PositiveFiniteNumber(const std::string& unit) {
   return CLI::Validator(
       [unit](std::string& value) -> std::string {
-        const char* begin = value.c_str();
-        char* end = nullptr;
-        errno = 0;
-        const double x = std::strtod(begin, &end);
-        if (!value.empty() && end == begin + value.size() && errno == 0 && std::isfinite(x) &&
-            x > 0.0) {
-          return std::string();
-        }
+        const std::optional<double> x = ParseFiniteNumber(value);
+        if (x && *x > 0.0) return std::string();
         return "expected a positive finite number of " + unit + ", got '" + value + "'";
       },
       "POSITIVE");

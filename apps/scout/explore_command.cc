@@ -19,7 +19,6 @@
 #include "apps/scout/report_command.h"
 #include "scout/common/atomic_file.h"
 #include "scout/common/error.h"
-#include "scout/common/format.h"
 #include "scout/exploration/exploration_loop.h"
 #include "scout/frontier/stopwatch.h"
 #include "scout/io/carmen_log_writer.h"

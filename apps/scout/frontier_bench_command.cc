@@ -2,7 +2,6 @@
 
 #include <unistd.h>
 
-#include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -13,7 +12,6 @@
 #include "apps/scout/report_command.h"
 #include "scout/common/atomic_file.h"
 #include "scout/common/error.h"
-#include "scout/common/format.h"
 #include "scout/frontier/frontier_engine.h"
 #include "scout/frontier/stopwatch.h"
 #include "scout/io/config.h"

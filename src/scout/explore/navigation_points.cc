@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <numbers>
 #include <vector>
 
 #include "scout/explore/option_check.h"
@@ -64,7 +65,7 @@ double UnknownAreaVisible(const PlanningMap& map, const Eigen::Vector2d& p, doub
   const double step = 0.5 * res;
   const int num_steps = static_cast<int>(range_m / step);
   for (int k = 0; k < num_rays; ++k) {
-    const double a = 2.0 * M_PI * k / num_rays;
+    const double a = 2.0 * std::numbers::pi * k / num_rays;
     const Eigen::Vector2d d(std::cos(a), std::sin(a));
     for (int i = 1; i <= num_steps; ++i) {
       const grid::CellIndex c = limits.CellContaining(p + d * (step * i));
