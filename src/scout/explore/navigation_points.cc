@@ -61,7 +61,7 @@ double UnknownAreaVisible(const PlanningMap& map, const Eigen::Vector2d& p, doub
   const int side = 2 * r + 1;
   std::vector<uint8_t> seen(static_cast<size_t>(side) * side, 0);
   int64_t unknown = 0;
-  const int num_rays = 360;
+  constexpr int num_rays = 360;
   const double step = 0.5 * res;
   const int num_steps = static_cast<int>(range_m / step);
   for (int k = 0; k < num_rays; ++k) {

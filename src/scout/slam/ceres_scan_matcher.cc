@@ -58,11 +58,7 @@ void Validate(const CeresScanMatcherOptions& options) {
                    "unknown_probability", options.unknown_probability, "in [0.1, 0.9]");
   CheckCeresOption(options.full_weight_num_points >= 0, "full_weight_num_points",
                    options.full_weight_num_points, ">= 0");
-  try {
-    Validate(options.likelihood_field);
-  } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument(std::string("ceres_scan_matcher.") + e.what());
-  }
+  Validate(options.likelihood_field, "ceres_scan_matcher.");
   CheckCeresOption(options.max_num_iterations >= 1, "max_num_iterations",
                    options.max_num_iterations, ">= 1");
 }

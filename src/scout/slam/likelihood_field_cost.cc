@@ -12,15 +12,15 @@
 
 namespace scout::slam {
 
-void Validate(const LikelihoodFieldOptions& options) {
+void Validate(const LikelihoodFieldOptions& options, const std::string& section) {
   if (!(options.sigma_m >= 0.0) || !std::isfinite(options.sigma_m)) {
-    throw std::invalid_argument("likelihood_field_sigma_m must be finite and >= 0, got " +
+    throw std::invalid_argument(section + "likelihood_field_sigma_m must be finite and >= 0, got " +
                                 FormatNumber(options.sigma_m));
   }
   if (!(options.occupied_probability >= grid::kMinProbability - 1e-6 &&
         options.occupied_probability <= grid::kMaxProbability + 1e-6)) {
     throw std::invalid_argument(
-        "likelihood_field_occupied_probability must be in [0.1, 0.9], got " +
+        section + "likelihood_field_occupied_probability must be in [0.1, 0.9], got " +
         FormatNumber(options.occupied_probability));
   }
 }

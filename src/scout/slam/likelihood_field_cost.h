@@ -1,6 +1,7 @@
 #ifndef SCOUT_SLAM_LIKELIHOOD_FIELD_COST_H_
 #define SCOUT_SLAM_LIKELIHOOD_FIELD_COST_H_
 
+#include <string>
 #include <vector>
 
 #include "scout/geometry/rigid_transform.h"
@@ -21,8 +22,9 @@ struct LikelihoodFieldOptions {
   double occupied_probability = 0.5;
 };
 
-// Throws std::invalid_argument naming the first invalid option by its key.
-void Validate(const LikelihoodFieldOptions& options);
+// Throws std::invalid_argument naming the first invalid option by its key,
+// after 'section' (the matcher's, e.g. "ceres_scan_matcher.").
+void Validate(const LikelihoodFieldOptions& options, const std::string& section);
 
 // The likelihood field of a window of the grid: at each cell centre
 // exp(-d^2 / (2 sigma^2)), d the distance to the nearest occupied cell's

@@ -39,11 +39,7 @@ void Validate(const RealTimeCorrelativeScanMatcherOptions& options) {
   CheckOption(options.unknown_probability >= grid::kMinProbability - 1e-6 &&
                   options.unknown_probability <= grid::kMaxProbability + 1e-6,
               "unknown_probability", options.unknown_probability, "in [0.1, 0.9]");
-  try {
-    Validate(options.likelihood_field);
-  } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument(std::string("real_time_correlative_scan_matcher.") + e.what());
-  }
+  Validate(options.likelihood_field, "real_time_correlative_scan_matcher.");
 }
 
 RealTimeCorrelativeScanMatcher::RealTimeCorrelativeScanMatcher(
