@@ -33,11 +33,15 @@ bool GoalManager::BlockedBehind(const geometry::Rigid2d& pose) const {
                       const double along = std::max(q.x(), -look_m);
                       behind_m = std::min(behind_m, (q - Eigen::Vector2d(along, 0.0)).norm());
                     });
-  // Blocked when backing up would bring the disc onto a mapped obstacle,
-  // closer by more than half the look-behind than any is now: where the map
-  // has the disc on a wall already (the map's error: the robot stands
-  // there), backing along it makes nothing worse.
-  return (behind_m < radius_m && behind_m < now_m - 0.5 * look_m) || OffTrail(pose);
+  // Blocked when backing up would bring the disc onto a mapped obstacle.
+  // Where the map has the disc on one already (the map's error: the robot
+  // stands there), backing along it makes nothing worse: then only coming
+  // closer to one by more than half the look-behind blocks. Applied to a
+  // disc the map has clear, that exception let the robot back into an
+  // obstacle beside and behind it, which nears the swept disc by less
+  // (willow-garage seed 2 with the visible gain, at 1970.85 s).
+  const bool clear_now = now_m >= radius_m;
+  return (behind_m < radius_m && (clear_now || behind_m < now_m - 0.5 * look_m)) || OffTrail(pose);
 }
 
 bool GoalManager::GuardRear(const ExploreInput& in, VelocityCommand* command) const {

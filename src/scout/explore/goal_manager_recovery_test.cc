@@ -140,6 +140,26 @@ TEST(GoalManagerTest, BackingUpStopsAtAWallTheMapShowsBehind) {
   EXPECT_EQ(gm.counters().back_ups_blocked, 0);
 }
 
+// An obstacle beside and behind a disc the map has clear: backing up 0.1 m
+// brings the disc onto it, though it nears the swept disc by only 0.034 m.
+TEST(GoalManagerTest, BackingUpStopsAtAnObstacleBesideAndBehind) {
+  Room room;
+  room.b.Wall(9, 22, 9, 22);                // centre (0.95, 2.25)
+  const Eigen::Vector2d robot(1.07, 2.06);  // 0.225 m away, at (-0.12, 0.19) facing +x
+  GoalManagerOptions o;                     // stuck recovery on
+  GoalManager gm = MakeManager(o);
+  gm.Start();
+  ExploreStatus s = gm.Update(room.Input(0, robot, true));
+  ASSERT_EQ(s.state, ExploreState::kDriving);
+  ASSERT_GT(s.command.linear_mps, 0.0);
+  for (double t = 0.5; t <= o.stuck_timeout_s; t += 0.5) s = gm.Update(room.Input(t, robot, false));
+  ASSERT_EQ(gm.counters().recoveries, 1);
+  s = gm.Update(room.Input(o.stuck_timeout_s + 0.1, robot, false));
+  EXPECT_GE(s.command.linear_mps, 0.0) << "reverses onto the obstacle";
+  EXPECT_EQ(s.state, ExploreState::kPlanning);
+  EXPECT_EQ(gm.counters().back_ups_blocked, 1);
+}
+
 // The lidar sees only ahead: a wall the recent scans saw behind the robot,
 // which its map does not have (misplaced), stops backing up before the disc
 // reaches it, unless the scan memory is off.
