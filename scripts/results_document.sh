@@ -162,6 +162,9 @@ EXPLORE_SCAN_MEMORY_COMMIT=9847fb7
 # ea2a217, 93f89d1 and 428423a (a confined robot's last resort, when the no-progress timer runs out) change only runs
 # that ended no_progress by that timer ("frontier_left": null, the goals had not run out).
 EXPLORE_LAST_RESORT_COMMIT=428423a
+# d4f3d46 (backing up stops at a mapped obstacle beside and behind a disc the map has clear)
+# changes only runs that backed up (goals.recoveries above 0).
+EXPLORE_BACK_UP_COMMIT=d4f3d46
 stale_runs() {
   local name f
   for name in "$@"; do
@@ -177,6 +180,7 @@ stale_runs() {
         grep -Eq '"goals_policy": *"(scout|meanshift-centres)"' "$f"; } ||
       { made_before "$EXPLORE_SCAN_MEMORY_COMMIT" "$name" &&
         grep -Eq '"goals_policy": *"scout"' "$f"; } ||
+      { made_before "$EXPLORE_BACK_UP_COMMIT" "$name" && grep -Eq '"recoveries": *[1-9]' "$f"; } ||
       { made_before "$EXPLORE_LAST_RESORT_COMMIT" "$name" &&
         grep -Eq '"terminated": *"no_progress"' "$f" && grep -Eq '"frontier_left": *null' "$f"; }; then
       printf '`%s` ' "$name"
