@@ -388,10 +388,15 @@ write_document() {
       echo "window three times that wide); or older than"
       echo "$EXPLORE_STUCK_COMMIT with a stuck recovery, or than $EXPLORE_RETRY_COMMIT with reachable frontier"
       echo "left at the end, or than $EXPLORE_GUARD_COMMIT with a guard stop or a stuck recovery, or than"
+      echo "$EXPLORE_BACK_UP_COMMIT with a stuck recovery (backing up stops at a mapped obstacle beside and"
+      echo "behind the disc), or than"
       echo "$EXPLORE_POLICY_COMMIT for the scout and meanshift-centres policies (information gain weighed"
       echo "1 instead of 3), or than $EXPLORE_SCAN_MEMORY_COMMIT for the scout policy (paths checked against"
       echo "the returns of the last 10 s of scans, $EXPLORE_SCAN_CHECK_COMMIT against the latest scan; the runs"
       echo "those commits change), so not like-for-like with the other runs: $stale"
+      echo "($EXPLORE_BACK_UP_COMMIT left all 48 runs outside the museum that backed up as they were,"
+      echo "\`coverage.csv\` byte for byte, when they were made again on 2026-12-05; the museum's 13 were"
+      echo "not made again then, at 35-40 min each.)"
       echo
     fi
     tables explore "${EXPLORE[@]}"
