@@ -394,9 +394,11 @@ write_document() {
       echo "1 instead of 3), or than $EXPLORE_SCAN_MEMORY_COMMIT for the scout policy (paths checked against"
       echo "the returns of the last 10 s of scans, $EXPLORE_SCAN_CHECK_COMMIT against the latest scan; the runs"
       echo "those commits change), so not like-for-like with the other runs: $stale"
-      echo "($EXPLORE_BACK_UP_COMMIT left all 48 runs outside the museum that backed up as they were,"
-      echo "\`coverage.csv\` byte for byte, when they were made again on 2026-12-05; the museum's 13 were"
-      echo "not made again then, at 35-40 min each.)"
+      if [[ $stale == *explore-museum-* ]]; then
+        echo "($EXPLORE_BACK_UP_COMMIT left all 48 runs outside the museum that backed up as they were,"
+        echo "\`coverage.csv\` byte for byte, when they were made again on 2026-12-05; the museum's"
+        echo "were not all made again then, at 35-40 min each.)"
+      fi
       echo
     fi
     tables explore "${EXPLORE[@]}"

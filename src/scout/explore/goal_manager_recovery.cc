@@ -36,9 +36,9 @@ bool GoalManager::BlockedBehind(const geometry::Rigid2d& pose) const {
   // Blocked when backing up would bring the disc onto a mapped obstacle.
   // Where the map has the disc on one already (the map's error: the robot
   // stands there), backing along it makes nothing worse: then only coming
-  // closer to one by more than half the look-behind blocks. Applied to a
-  // disc the map has clear, that exception let the robot back into an
-  // obstacle beside and behind it, which nears the swept disc by less
+  // closer to one by more than half the look-behind blocks. That exception
+  // is not for a disc the map has clear: an obstacle beside and behind the
+  // robot comes closer by less than that, and the robot backed into one
   // (willow-garage seed 2 with the visible gain, at 1970.85 s).
   const bool clear_now = now_m >= radius_m;
   return (behind_m < radius_m && (clear_now || behind_m < now_m - 0.5 * look_m)) || OffTrail(pose);
