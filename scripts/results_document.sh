@@ -395,9 +395,9 @@ write_document() {
       echo "the returns of the last 10 s of scans, $EXPLORE_SCAN_CHECK_COMMIT against the latest scan; the runs"
       echo "those commits change), so not like-for-like with the other runs: $stale"
       if [[ $stale == *explore-museum-* ]]; then
-        echo "($EXPLORE_BACK_UP_COMMIT left all 48 runs outside the museum that backed up as they were,"
-        echo "\`coverage.csv\` byte for byte, when they were made again on 2026-12-05; the museum's"
-        echo "were not all made again then, at 35-40 min each.)"
+        echo "($EXPLORE_BACK_UP_COMMIT left all 52 runs that backed up and were made again on 2026-12-05"
+        echo "as they were, \`coverage.csv\` byte for byte: the 48 outside the museum and the scout"
+        echo "policy's four in the museum; the museum's other nine, at 35-40 min each, were not.)"
       fi
       echo
     fi
