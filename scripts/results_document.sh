@@ -397,7 +397,7 @@ write_document() {
       if [[ $stale == *explore-museum-* ]]; then
         echo "($EXPLORE_BACK_UP_COMMIT left all 52 runs that backed up and were made again on 2026-12-05"
         echo "as they were, \`coverage.csv\` byte for byte: the 48 outside the museum and the scout"
-        echo "policy's four in the museum; the museum's other nine, at 35-40 min each, were not.)"
+        echo "policy's four in the museum; the museum's other ten, at 35-40 min each, were not.)"
       fi
       echo
     fi
