@@ -180,12 +180,26 @@ stale_runs() {
         grep -Eq '"goals_policy": *"(scout|meanshift-centres)"' "$f"; } ||
       { made_before "$EXPLORE_SCAN_MEMORY_COMMIT" "$name" &&
         grep -Eq '"goals_policy": *"scout"' "$f"; } ||
-      { made_before "$EXPLORE_BACK_UP_COMMIT" "$name" && grep -Eq '"recoveries": *[1-9]' "$f"; } ||
+      [[ -n $(stale_by_back_up "$name") ]] ||
       { made_before "$EXPLORE_LAST_RESORT_COMMIT" "$name" &&
         grep -Eq '"terminated": *"no_progress"' "$f" && grep -Eq '"frontier_left": *null' "$f"; }; then
       printf '`%s` ' "$name"
     fi
   done
+}
+
+# stale_by_back_up NAME...: the explore runs that backed up with a build older than
+# EXPLORE_BACK_UP_COMMIT (the note on the runs made again with it applies while any is left).
+stale_by_back_up() {
+  local name
+  for name in "$@"; do
+    [[ -f $OUT/$name/summary.json ]] || continue
+    if made_before "$EXPLORE_BACK_UP_COMMIT" "$name" &&
+      grep -Eq '"recoveries": *[1-9]' "$OUT/$name/summary.json"; then
+      printf '`%s` ' "$name"
+    fi
+  done
+  return 0
 }
 
 # b77b701: exact follows one witness per point that is not a frontier. It answers as before
@@ -394,7 +408,7 @@ write_document() {
       echo "1 instead of 3), or than $EXPLORE_SCAN_MEMORY_COMMIT for the scout policy (paths checked against"
       echo "the returns of the last 10 s of scans, $EXPLORE_SCAN_CHECK_COMMIT against the latest scan; the runs"
       echo "those commits change), so not like-for-like with the other runs: $stale"
-      if [[ $stale == *explore-museum-* ]]; then
+      if [[ -n $(stale_by_back_up "${EXPLORE[@]}") ]]; then
         echo "($EXPLORE_BACK_UP_COMMIT left all 52 runs that backed up and were made again on 2026-12-05"
         echo "as they were, \`coverage.csv\` byte for byte: the 48 outside the museum and the scout"
         echo "policy's four in the museum; the museum's other ten, at 35-40 min each, were not.)"
