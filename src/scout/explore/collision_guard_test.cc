@@ -115,6 +115,30 @@ TEST(CollisionGuardTest, AStoppedRobotTurnsAwayFromWhatStopsItAndDrivesOn) {
   EXPECT_LT(drive(keep_turn, &closest), 0.01);
 }
 
+TEST(CollisionGuardTest, AStoppedRobotDoesNotTurnTowardWhatStopsIt) {
+  // willow-garage, seed 2 (visible gain): a return 3 cm from the disc
+  // ahead-left, the follower turning left toward its path. Turning left puts
+  // the return ahead (the way clears only after about 145 degrees); turning
+  // right clears it after about 20. The robot turns right.
+  const std::vector<Eigen::Vector2d> ahead_left = {{0.10, 0.21}, {0.12, 0.20}};
+  const VelocityCommand toward{0.5, 0.5};
+  const GuardedCommand g = GuardCommand(toward, ahead_left, kRadius, {}, 1.0);
+  EXPECT_TRUE(g.stopped);
+  EXPECT_EQ(g.command.linear_mps, 0.0);
+  EXPECT_DOUBLE_EQ(g.command.angular_radps, -0.5);
+  // Mirrored: a return ahead-right, the follower turning right: turns left.
+  const GuardedCommand m =
+      GuardCommand({0.5, -0.5}, {{0.10, -0.21}, {0.12, -0.20}}, kRadius, {}, 1.0);
+  EXPECT_TRUE(m.stopped);
+  EXPECT_DOUBLE_EQ(m.command.angular_radps, 0.5);
+  // A wall straight across the way clears about as soon either way: the
+  // follower's decisive turn is kept, whichever way it goes.
+  std::vector<Eigen::Vector2d> wall;
+  for (double y = -1.0; y <= 1.0; y += 0.02) wall.push_back({0.235, y});
+  EXPECT_DOUBLE_EQ(GuardCommand({0.5, 0.6}, wall, kRadius, {}, 1.0).command.angular_radps, 0.6);
+  EXPECT_DOUBLE_EQ(GuardCommand({0.5, -0.6}, wall, kRadius, {}, 1.0).command.angular_radps, -0.6);
+}
+
 TEST(CollisionGuardTest, SteersTheNearestClearArcAwayFromAPost) {
   // A post 0.5 m ahead, slightly left: the straight arc would be slowed.
   const GuardedCommand g = GuardCommand({0.5, 0.0}, {{0.5, 0.05}}, kRadius, {}, 1.0);
