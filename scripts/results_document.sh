@@ -165,6 +165,10 @@ EXPLORE_LAST_RESORT_COMMIT=428423a
 # d4f3d46 (backing up stops at a mapped obstacle beside and behind a disc the map has clear)
 # changes only runs that backed up (goals.recoveries above 0).
 EXPLORE_BACK_UP_COMMIT=d4f3d46
+# 2c431ab (a robot the collision guard stops turns the way that clears the way ahead by far the
+# shorter turn, not toward what stops it) changes only runs in which the guard stopped the robot
+# (goals.guard_stops above 0).
+EXPLORE_STOP_TURN_COMMIT=2c431ab
 stale_runs() {
   local name f
   for name in "$@"; do
@@ -181,6 +185,7 @@ stale_runs() {
       { made_before "$EXPLORE_SCAN_MEMORY_COMMIT" "$name" &&
         grep -Eq '"goals_policy": *"scout"' "$f"; } ||
       [[ -n $(stale_by_back_up "$name") ]] ||
+      { made_before "$EXPLORE_STOP_TURN_COMMIT" "$name" && grep -Eq '"guard_stops": *[1-9]' "$f"; } ||
       { made_before "$EXPLORE_LAST_RESORT_COMMIT" "$name" &&
         grep -Eq '"terminated": *"no_progress"' "$f" && grep -Eq '"frontier_left": *null' "$f"; }; then
       printf '`%s` ' "$name"
@@ -403,7 +408,8 @@ write_document() {
       echo "$EXPLORE_STUCK_COMMIT with a stuck recovery, or than $EXPLORE_RETRY_COMMIT with reachable frontier"
       echo "left at the end, or than $EXPLORE_GUARD_COMMIT with a guard stop or a stuck recovery, or than"
       echo "$EXPLORE_BACK_UP_COMMIT with a stuck recovery (backing up stops at a mapped obstacle beside and"
-      echo "behind the disc), or than"
+      echo "behind the disc), or than $EXPLORE_STOP_TURN_COMMIT with a guard stop (a stopped robot turns the way"
+      echo "that clears the way ahead by far the shorter turn), or than"
       echo "$EXPLORE_POLICY_COMMIT for the scout and meanshift-centres policies (information gain weighed"
       echo "1 instead of 3), or than $EXPLORE_SCAN_MEMORY_COMMIT for the scout policy (paths checked against"
       echo "the returns of the last 10 s of scans, $EXPLORE_SCAN_CHECK_COMMIT against the latest scan; the runs"
