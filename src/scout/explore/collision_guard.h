@@ -58,8 +58,8 @@ struct CollisionGuardOptions {
   // When no arc is clear (the robot stops), it turns on the spot away from
   // the return that stops it at this rate (rad/s), unless the follower
   // already turns at least this fast; either way, it turns the other way
-  // when that clears the way ahead by a far shorter turn (collision_guard.cc,
-  // StopAndTurnAway). Keeping the follower's turn deadlocks
+  // when that clears the way ahead by a turn at least 30 degrees shorter
+  // (collision_guard.cc, StopAndTurnAway). Keeping the follower's turn deadlocks
   // where the path runs past a wall closer than the map says: the follower,
   // aimed along its path, turns by almost nothing, so the robot stands
   // still until the goal fails, and the next goal's path runs the same
