@@ -100,7 +100,7 @@ double TurnToClear(double direction, const std::vector<Eigen::Vector2d>& obstacl
 // willow-garage (seed 2, with the visible gain) the robot stood 200 s with a
 // return 3 cm from its disc ahead-left while the follower turned left toward
 // its path, which put the return squarely ahead (the way cleared 20 degrees
-// to the right, 145 to the left); every goal there failed in turn.
+// to the right, 150 to the left, in the guard's 5 degree steps); every goal there failed in turn.
 VelocityCommand StopAndTurnAway(const VelocityCommand& command, double side,
                                 const std::vector<Eigen::Vector2d>& obstacles, double keep_m,
                                 const CollisionGuardOptions& options, double max_angular_radps) {

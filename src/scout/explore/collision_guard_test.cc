@@ -118,7 +118,7 @@ TEST(CollisionGuardTest, AStoppedRobotTurnsAwayFromWhatStopsItAndDrivesOn) {
 TEST(CollisionGuardTest, AStoppedRobotDoesNotTurnTowardWhatStopsIt) {
   // willow-garage, seed 2 (visible gain): a return 3 cm from the disc
   // ahead-left, the follower turning left toward its path. Turning left puts
-  // the return ahead (the way clears only after about 145 degrees); turning
+  // the return ahead (the way clears only after 150 degrees); turning
   // right clears it after about 20. The robot turns right.
   const std::vector<Eigen::Vector2d> ahead_left = {{0.10, 0.21}, {0.12, 0.20}};
   const VelocityCommand toward{0.5, 0.5};
