@@ -95,12 +95,13 @@ double TurnToClear(double direction, const std::vector<Eigen::Vector2d>& obstacl
 // The command of a robot that stops short of an obstacle on 'side' (+1:
 // left): no forward speed, and a turn on the spot, toward the follower's
 // turn if that is at least stop_turn_radps, else away from the obstacle;
-// but the other way when that clears the way ahead by far the shorter turn.
-// Keeping a decisive turn toward what stops the robot deadlocked it: at
-// willow-garage (seed 2, with the visible gain) the robot stood 200 s with a
-// return 3 cm from its disc ahead-left while the follower turned left toward
-// its path, which put the return squarely ahead (the way cleared 20 degrees
-// to the right, 150 to the left, in the guard's 5 degree steps); every goal there failed in turn.
+// but the other way when that clears the way ahead by a turn at least
+// kMarginRad shorter. Keeping a decisive turn toward what stops the robot
+// deadlocked it: at willow-garage (seed 2, with the visible gain) the robot
+// stood 200 s with a return 3 cm from its disc ahead-left while the follower
+// turned left toward its path, which put the return squarely ahead (the way
+// cleared 20 degrees to the right, 150 to the left, in TurnToClear's steps);
+// every goal there failed in turn.
 VelocityCommand StopAndTurnAway(const VelocityCommand& command, double side,
                                 const std::vector<Eigen::Vector2d>& obstacles, double keep_m,
                                 const CollisionGuardOptions& options, double max_angular_radps) {
