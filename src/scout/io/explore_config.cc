@@ -231,6 +231,13 @@ void ValidateExploreAndRobot(const exploration::ExploreOptions& explore,
                      "robot.scan_rate_hz = " + FormatNumber(1.0 / robot.scan_rate_hz) +
                      " s), got " + FormatNumber(explore.dt_s));
   }
+  // Nor more than one odometry sample per step: a faster rate would be read as
+  // the step rate, and the noise, drawn per sample, would not be what it says.
+  if (robot.odometry_rate_hz > 1.0 / explore.dt_s * (1.0 + 1e-9)) {
+    throw InputError(file + ": 'robot.odometry_rate_hz': expected at most one sample per " +
+                     "simulation step (1 / explore.dt_s = " + FormatNumber(1.0 / explore.dt_s) +
+                     " Hz), got " + FormatNumber(robot.odometry_rate_hz));
+  }
   Check(explore.goals, file, "explore.goals");
   Check(explore.traversability, file, "explore.traversability");
   Check(explore.planner, file, "explore.planner");

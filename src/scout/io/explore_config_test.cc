@@ -186,7 +186,16 @@ TEST_F(ExploreConfigTest, ErrorsNameTheKey) {
   const std::string step = ErrorOf("explore:\n  dt_s: 0.5\n");
   EXPECT_NE(step.find("'explore.dt_s': expected at most one scan period"), std::string::npos)
       << step;
-  EXPECT_EQ(ErrorOf("explore:\n  dt_s: 0.1\n"), "");
+  EXPECT_EQ(ErrorOf("explore:\n  dt_s: 0.1\nrobot:\n  odometry_rate_hz: 10\n"), "");
+  // Nor can it sample odometry more often than once per step: at 0.1 s steps
+  // the default 20 Hz odometry would have been read at 10 Hz, with twice the
+  // noise per sample.
+  const std::string odometry = ErrorOf("explore:\n  dt_s: 0.1\n");
+  EXPECT_NE(odometry.find("'robot.odometry_rate_hz': expected at most one sample per simulation "
+                          "step (1 / explore.dt_s = 10 Hz), got 20"),
+            std::string::npos)
+      << odometry;
+  EXPECT_EQ(ErrorOf("explore:\n  dt_s: 0.02\nrobot:\n  odometry_rate_hz: 50\n"), "");
   // 1e-9 s steps never reached a second of simulated time.
   const std::string tiny = ErrorOf("explore:\n  dt_s: 1e-9\n");
   EXPECT_NE(tiny.find("'explore.dt_s': expected a number in [0.001, 1], got 1e-09"),

@@ -15,11 +15,15 @@ namespace scout::sim {
 //   rotation sd    = rot_per_rot * |drot|       + rot_per_trans * |dtrans|
 // The noise is independent per sample, so drift grows like the square root of
 // the distance and DEPENDS ON THE SAMPLE SPACING (sd per sample is linear in
-// the motion, as in the book). The defaults are set for 50 Hz samples at
+// the motion, as in the book). The defaults were chosen for 50 Hz samples at
 // 0.5 m/s (1 cm apart) and 1 rad/s; odometry_model_test measures, over 400
 // seeds: 10 m straight gives an along-track sd of 0.125 m (1.25 %), a heading
 // sd of 0.98 deg and a position rms error of 0.16 m (1.6 %); one turn in place
-// gives a heading sd of 2.0 deg.
+// gives a heading sd of 2.0 deg. `scout explore` samples once per 0.05 s step
+// (robot.odometry_rate_hz 20, 2.5 cm and 0.05 rad apart), which every one of
+// its runs has done: there the same defaults drift sqrt(2.5) = 1.58 times as
+// much (10 m straight: along-track sd 0.20 m, heading sd 1.5 deg; one turn in
+// place: heading sd 3.2 deg; odometry_model_test).
 struct OdometryNoiseOptions {
   double trans_per_trans = 0.4;   // m of sd per m travelled
   double trans_per_rot = 0.005;   // m of sd per rad turned

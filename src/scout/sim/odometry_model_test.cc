@@ -139,6 +139,22 @@ TEST(OdometryModel, TurningDriftMatchesConfiguredNoise) {
   EXPECT_NEAR(s.sd_heading_rad / expected_heading_rad, 1.0, 0.15);
 }
 
+// `scout explore` samples once per 0.05 s step: 2.5 cm and 0.05 rad apart at
+// its speeds, so the same defaults drift sqrt(2.5) times as much as at 50 Hz.
+TEST(OdometryModel, DriftAtTheExplorersSampleSpacing) {
+  const OdometryNoiseOptions options;
+  const DriftStatistics straight = MeasureDrift(options, 0.025, 0.0, 400, 400);
+  const DriftStatistics turn = MeasureDrift(options, 0.0, 2 * kPiRad / 126, 126, 400);
+  std::printf(
+      "20 Hz: 10 m straight along-track sd %.4f m, heading sd %.3f deg; one turn %.3f deg\n",
+      straight.sd_along_m, straight.sd_heading_rad * 180 / kPiRad,
+      turn.sd_heading_rad * 180 / kPiRad);
+  // The figures odometry_model.h states: 0.20 m, 1.5 deg and 3.2 deg.
+  EXPECT_NEAR(straight.sd_along_m / 0.20, 1.0, 0.15);
+  EXPECT_NEAR(straight.sd_heading_rad * 180 / kPiRad / 1.5, 1.0, 0.15);
+  EXPECT_NEAR(turn.sd_heading_rad * 180 / kPiRad / 3.2, 1.0, 0.15);
+}
+
 TEST(OdometryModel, InvalidOptionsNameTheKey) {
   OdometryNoiseOptions options;
   options.rot_per_trans = -0.1;

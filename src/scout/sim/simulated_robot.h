@@ -21,9 +21,11 @@ struct SimulatedRobotOptions {
   OdometryNoiseOptions odometry;
   // Scans per second (the paper's Hokuyo class runs at 10 Hz).
   double scan_rate_hz = 10.0;
-  // Odometry samples per second. The noise is drawn per sample, so a different
-  // rate changes the drift (see OdometryNoiseOptions, calibrated for 50 Hz).
-  double odometry_rate_hz = 50.0;
+  // Odometry samples per second, at most one per Step (a faster rate samples
+  // once per step). The noise is drawn per sample, so a different rate changes
+  // the drift (see OdometryNoiseOptions). 20 Hz: one sample per step of
+  // `scout explore` (explore.dt_s = 0.05 s), as it has always sampled.
+  double odometry_rate_hz = 20.0;
   // Heading at the world's start position.
   double start_heading_rad = 0.0;
 };

@@ -52,7 +52,9 @@ Recording Drive(SimulatedRobot* robot, int steps, double dt_s) {
 
 TEST(SimulatedRobot, SensorRatesAndTimestamps) {
   const World world = MakeWallWorld();
-  SimulatedRobot robot(world, SimulatedRobotOptions{}, 1);
+  SimulatedRobotOptions options;
+  options.odometry_rate_hz = 50.0;
+  SimulatedRobot robot(world, options, 1);
   const Recording r = Drive(&robot, 100, 0.01);
   EXPECT_NEAR(robot.sim_time_s(), 1.0, 1e-12);
   // t = 0, 0.1, ..., 1.0 and t = 0, 0.02, ..., 1.0.
@@ -68,7 +70,9 @@ TEST(SimulatedRobot, SensorRatesAndTimestamps) {
 
 TEST(SimulatedRobot, StepsLongerThanAPeriodTakeTheFirstStepAtOrAfterEachDueTime) {
   const World world = MakeWallWorld();
-  SimulatedRobot robot(world, SimulatedRobotOptions{}, 1);
+  SimulatedRobotOptions options;
+  options.odometry_rate_hz = 50.0;
+  SimulatedRobot robot(world, options, 1);
   // 0.03 s steps: scans due every 0.1 s are taken at 0, 0.12, 0.21, 0.3, ...
   const Recording r = Drive(&robot, 100, 0.03);
   ASSERT_EQ(r.scans.size(), 31u);
@@ -149,7 +153,7 @@ TEST(SimulatedRobot, InvalidOptionsAreInputErrors) {
 }
 
 // Wanders the generated office with a crude bumper controller and reports
-// the cost of a 10 ms step including 10 Hz scans and 50 Hz odometry.
+// the cost of a 10 ms step including 10 Hz scans and 20 Hz odometry.
 TEST(SimulatedRobot, WandersTheOfficeWithoutErrors) {
   const World world = MakeWorld("office", 1);
   SimulatedRobot robot(world, SimulatedRobotOptions{}, 1);
