@@ -144,8 +144,27 @@ void CheckExplorationOptions(const ExplorationOptions& options) {
                      FormatNumber(options.robot.robot.max_linear_speed_mps) + " m/s, " +
                      FormatNumber(options.robot.robot.max_angular_speed_radps) + " rad/s)");
   }
+  CheckSensorRatesAtStep(e, options.robot);
   if (options.start && !options.start->allFinite()) {
     throw InputError("--start: expected finite coordinates");
+  }
+}
+
+void CheckSensorRatesAtStep(const ExploreOptions& explore,
+                            const sim::SimulatedRobotOptions& robot) {
+  // The simulator samples at most one scan per step: a longer step drops scans.
+  if (explore.dt_s > 1.0 / robot.scan_rate_hz * (1.0 + 1e-9)) {
+    throw InputError("'explore.dt_s': expected at most one scan period (1 / robot.scan_rate_hz = " +
+                     FormatNumber(1.0 / robot.scan_rate_hz) + " s), got " +
+                     FormatNumber(explore.dt_s));
+  }
+  // Nor more than one odometry sample per step: a faster rate would be read as
+  // the step rate, and the noise, drawn per sample, would not be what it says.
+  if (robot.odometry_rate_hz > 1.0 / explore.dt_s * (1.0 + 1e-9)) {
+    throw InputError(
+        "'robot.odometry_rate_hz': expected at most one sample per simulation step "
+        "(1 / explore.dt_s = " +
+        FormatNumber(1.0 / explore.dt_s) + " Hz), got " + FormatNumber(robot.odometry_rate_hz));
   }
 }
 

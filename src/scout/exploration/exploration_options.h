@@ -145,6 +145,11 @@ void CheckExplorationOptions(const ExplorationOptions& options);
 // least three finite vertices (part of CheckExplorationOptions).
 void CheckExplorationBoundary(const std::vector<Eigen::Vector2d>& boundary);
 
+// Throws InputError naming the key unless the simulator can keep the robot's
+// sensor rates at this step: at most one scan and one odometry sample per
+// step (part of CheckExplorationOptions).
+void CheckSensorRatesAtStep(const ExploreOptions& explore, const sim::SimulatedRobotOptions& robot);
+
 // Returns options.slam with explore.local_slam applied: what the loop runs.
 slam::SlamOptions EffectiveSlamOptions(const ExplorationOptions& options);
 

@@ -4,7 +4,6 @@
 #include <stdexcept>
 
 #include "scout/common/error.h"
-#include "scout/common/format.h"
 #include "scout/explore/tour.h"
 
 namespace scout::io {
@@ -225,18 +224,10 @@ void ValidateExploreAndRobot(const exploration::ExploreOptions& explore,
   } catch (const InputError& e) {
     throw InputError(file + ": " + e.what());
   }
-  // The simulator samples at most one scan per step: a longer step drops scans.
-  if (explore.dt_s > 1.0 / robot.scan_rate_hz * (1.0 + 1e-9)) {
-    throw InputError(file + ": 'explore.dt_s': expected at most one scan period (1 / " +
-                     "robot.scan_rate_hz = " + FormatNumber(1.0 / robot.scan_rate_hz) +
-                     " s), got " + FormatNumber(explore.dt_s));
-  }
-  // Nor more than one odometry sample per step: a faster rate would be read as
-  // the step rate, and the noise, drawn per sample, would not be what it says.
-  if (robot.odometry_rate_hz > 1.0 / explore.dt_s * (1.0 + 1e-9)) {
-    throw InputError(file + ": 'robot.odometry_rate_hz': expected at most one sample per " +
-                     "simulation step (1 / explore.dt_s = " + FormatNumber(1.0 / explore.dt_s) +
-                     " Hz), got " + FormatNumber(robot.odometry_rate_hz));
+  try {
+    exploration::CheckSensorRatesAtStep(explore, robot);
+  } catch (const InputError& e) {
+    throw InputError(file + ": " + e.what());
   }
   Check(explore.goals, file, "explore.goals");
   Check(explore.traversability, file, "explore.traversability");
