@@ -224,6 +224,7 @@ nlohmann::json Summary(const ExploreArgs& args, const exploration::ExplorationLo
                {"optimizations", stats.num_optimizations},
                {"loop_closures", stats.num_loop_closures},
                {"rejected_loop_closures", stats.num_rejected_loop_closures},
+               {"gated_loop_closures", stats.num_gated_loop_closures},
                {"loop_closure_searches", stats.num_loop_closure_searches},
                {"solve_time_s", stats.total_solve_time_s},
                {"scans", stats.num_scans},

@@ -105,6 +105,7 @@ void ReadPoseGraph(YamlSection s, slam::PoseGraphOptions* o) {
   s.ReadInt("skip_neighbour_submaps", &o->skip_neighbour_submaps, 0);
   s.ReadBool("search_windows_through_loop_closures", &o->search_windows_through_loop_closures);
   s.ReadNonNegative("loop_closure_chain_travel_m", &o->loop_closure_chain_travel_m);
+  s.ReadBool("gate_loop_closures_by_chain", &o->gate_loop_closures_by_chain);
   s.ReadPositive("outlier_translation_m", &o->outlier_translation_m);
   s.ReadPositive("outlier_rotation_deg", &o->outlier_rotation_deg);
   s.ReadInt("max_outlier_rounds", &o->max_outlier_rounds, 0);

@@ -224,7 +224,8 @@ bool ConstraintBuilder::ShouldSearch(int submap_id, const geometry::Rigid2d& ini
 
 std::optional<Constraint> ConstraintBuilder::Search(int submap_id, int node_id,
                                                     const geometry::Rigid2d& initial_relative_pose,
-                                                    const PointCloud& points, double travel_m) {
+                                                    const PointCloud& points, double travel_m,
+                                                    double max_innovation_m) {
   const auto it = submaps_.find(submap_id);
   if (it == submaps_.end()) {
     throw std::invalid_argument("ConstraintBuilder::Search: submap " + std::to_string(submap_id) +
@@ -240,6 +241,10 @@ std::optional<Constraint> ConstraintBuilder::Search(int submap_id, int node_id,
   // estimate, and keep the match only if it is still the one best answer.
   const double innovation_m =
       (match->pose.translation() - initial_relative_pose.translation()).norm();
+  if (innovation_m > max_innovation_m) {
+    ++num_gated_;
+    return std::nullopt;
+  }
   if (options_.wide_ambiguity_min_innovation_m > 0.0 &&
       innovation_m > options_.wide_ambiguity_min_innovation_m) {
     const double window_m = std::min(options_.wide_ambiguity_max_window_m,

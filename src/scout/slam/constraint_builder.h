@@ -2,6 +2,7 @@
 #define SCOUT_SLAM_CONSTRAINT_BUILDER_H_
 
 #include <atomic>
+#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
@@ -177,24 +178,28 @@ class ConstraintBuilder {
   // finished submap 'submap_id' around 'initial_relative_pose' (node in
   // submap frame) and returns the loop closure if one scores >= min_score.
   // 'travel_m' is the length of the trajectory between the node and the
-  // submap, which sizes the search window. Throws std::invalid_argument if
-  // the submap was not added.
-  std::optional<Constraint> Search(int submap_id, int node_id,
-                                   const geometry::Rigid2d& initial_relative_pose,
-                                   const PointCloud& points, double travel_m);
+  // submap, which sizes the search window. A match whose translation is
+  // more than 'max_innovation_m' from 'initial_relative_pose' is rejected
+  // (counted by num_gated). Throws std::invalid_argument if the submap was
+  // not added.
+  std::optional<Constraint> Search(
+      int submap_id, int node_id, const geometry::Rigid2d& initial_relative_pose,
+      const PointCloud& points, double travel_m,
+      double max_innovation_m = std::numeric_limits<double>::infinity());
   // The translation window searched for a node 'travel_m' of trajectory away.
   double SearchWindow(double travel_m) const;
   // The angular window (radians) searched for a node 'travel_m' away.
   double AngularSearchWindow(double travel_m) const;
 
   // Pairs searched, loop closures found, pairs skipped for lack of overlap,
-  // matches rejected by the free-space check and by the wide ambiguity test,
-  // so far.
+  // matches rejected by the free-space check, by the wide ambiguity test and
+  // by the innovation gate, so far.
   int num_searches() const { return num_searches_; }
   int num_constraints_found() const { return num_found_; }
   int num_without_overlap() const { return num_without_overlap_; }
   int num_seeing_through() const { return num_seeing_through_; }
   int num_wide_ambiguous() const { return num_wide_ambiguous_; }
+  int num_gated() const { return num_gated_; }
 
  private:
   struct SubmapMatcher {
@@ -213,6 +218,7 @@ class ConstraintBuilder {
   int num_without_overlap_ = 0;
   std::atomic<int> num_seeing_through_ = 0;
   std::atomic<int> num_wide_ambiguous_ = 0;
+  std::atomic<int> num_gated_ = 0;
 };
 
 // The branch-and-bound score of 'points' (scan frame) placed by 'pose' (scan

@@ -289,6 +289,30 @@ TEST(ConstraintBuilderTest, AMatchFarFromTheEstimateMustStayUniqueInAWiderWindow
   EXPECT_TRUE(twice.Search(0, 1, estimate, scan, 125.0).has_value());
 }
 
+// The pose graph's gate: once loop closures tie the node to the submap, the
+// estimate is known within the window of that chain, and the copy 2.8 m
+// from the estimate above is rejected however well it scores.
+TEST(ConstraintBuilderTest, AMatchFartherFromTheEstimateThanTheGateIsRejected) {
+  const std::vector<Wall> walls = RepeatingHall();
+  std::vector<Rigid2d> poses;
+  for (int i = 0; i <= 40; ++i) poses.emplace_back(-10.0 + 0.5 * i, 0.1 * std::sin(i), 0.0);
+  const auto grid =
+      std::make_shared<const grid::ProbabilityGrid>(global_testing::BuildGrid(walls, {}, poses));
+  const PointCloud scan = global_testing::ScanReturns(walls, Rigid2d(0.0, 0.0, 0.0));
+  const Rigid2d estimate(5.2, 0.15, 0.02);
+  ConstraintBuilderOptions options;
+  options.min_overlap = 0.0;
+  options.wide_ambiguity_min_innovation_m = 0.0;
+  ConstraintBuilder builder(options);
+  builder.AddFinishedSubmap(0, grid);
+  EXPECT_FALSE(builder.Search(0, 1, estimate, scan, 125.0, /*max_innovation_m=*/2.5).has_value());
+  EXPECT_EQ(builder.num_gated(), 1);
+  const std::optional<Constraint> loose = builder.Search(0, 1, estimate, scan, 125.0, 3.0);
+  ASSERT_TRUE(loose.has_value());
+  EXPECT_NEAR(loose->relative_pose.x(), 8.0, 0.1);
+  EXPECT_EQ(builder.num_gated(), 1);
+}
+
 // Where the place has no copy, a match far from the estimate survives the
 // wide test and is the true pose.
 TEST(ConstraintBuilderTest, AUniqueMatchFarFromTheEstimatePassesTheWideTest) {

@@ -106,6 +106,7 @@ SlamStats MapBuilder::GetStats() const {
   stats.num_optimizations = graph.num_optimizations;
   stats.num_loop_closures = graph.num_loop_closures;
   stats.num_rejected_loop_closures = graph.num_rejected_loop_closures;
+  stats.num_gated_loop_closures = graph.num_gated_loop_closures;
   stats.num_loop_closure_searches = graph.num_searches;
   stats.total_solve_time_s = graph.total_solve_time_s;
   stats.num_scans = num_scans_;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -241,6 +242,7 @@ void PoseGraph::SearchPairs(const std::vector<std::pair<int, int>>& pairs) {
     geometry::Rigid2d initial_relative_pose;
     std::shared_ptr<const PointCloud> points;
     double travel_m = 0.0;
+    double max_innovation_m = std::numeric_limits<double>::infinity();
   };
   // The pairs share their node (a new node against the finished submaps) or
   // their submap (a finished submap against older nodes): one shortest-chain
@@ -255,7 +257,9 @@ void PoseGraph::SearchPairs(const std::vector<std::pair<int, int>>& pairs) {
   };
   enum class Chain { kNone, kFromNode, kFromSubmap } chain_from = Chain::kNone;
   std::vector<double> chain_m;
-  if (options_.search_windows_through_loop_closures && !pairs.empty()) {
+  const bool use_chains =
+      options_.search_windows_through_loop_closures || options_.gate_loop_closures_by_chain;
+  if (use_chains && !pairs.empty()) {
     std::lock_guard<std::mutex> lock(mutex_);
     std::vector<std::pair<int, double>> sources;
     if (same_node()) {
@@ -288,13 +292,18 @@ void PoseGraph::SearchPairs(const std::vector<std::pair<int, int>>& pairs) {
       const double first_m = nodes_[members.front()].travel_m;
       const double last_m = nodes_[members.back()].travel_m;
       s.travel_m = std::max({0.0, first_m - node_travel_m, node_travel_m - last_m});
+      double chain_travel_m = s.travel_m;
       if (chain_from == Chain::kFromNode) {
-        s.travel_m = std::min(s.travel_m, chain_m[submap_id]);
+        chain_travel_m = std::min(chain_travel_m, chain_m[submap_id]);
       } else if (chain_from == Chain::kFromSubmap) {
         for (int a : nodes_[node_id].submap_ids) {
-          s.travel_m =
-              std::min(s.travel_m, chain_m[a] + std::abs(node_travel_m - SubmapStartTravel(a)));
+          chain_travel_m =
+              std::min(chain_travel_m, chain_m[a] + std::abs(node_travel_m - SubmapStartTravel(a)));
         }
+      }
+      if (options_.search_windows_through_loop_closures) s.travel_m = chain_travel_m;
+      if (options_.gate_loop_closures_by_chain && chain_from != Chain::kNone) {
+        s.max_innovation_m = constraint_builder_.SearchWindow(chain_travel_m);
       }
     }
     if (constraint_builder_.ShouldSearch(submap_id, s.initial_relative_pose, *s.points,
@@ -309,7 +318,7 @@ void PoseGraph::SearchPairs(const std::vector<std::pair<int, int>>& pairs) {
     for (int64_t i = begin; i < end; ++i) {
       const Search& s = chosen[i];
       found[i] = constraint_builder_.Search(s.submap_id, s.node_id, s.initial_relative_pose,
-                                            *s.points, s.travel_m);
+                                            *s.points, s.travel_m, s.max_innovation_m);
     }
   });
   std::lock_guard<std::mutex> lock(mutex_);
@@ -317,7 +326,7 @@ void PoseGraph::SearchPairs(const std::vector<std::pair<int, int>>& pairs) {
     ++stats_.num_searches;
     if (f) {
       constraints_.push_back(*f);
-      if (options_.search_windows_through_loop_closures) AddLoopLink(*f);
+      AddLoopLink(*f);
       ++stats_.num_loop_closures;
     }
   }
@@ -402,7 +411,7 @@ void PoseGraph::ApplySolve(int num_nodes, int num_submaps, const SolveOutput& ou
       submaps_[i].state.global_pose = local_to_global_ * submaps_[i].state.local_pose;
     }
     std::erase_if(constraints_, [&](const Constraint& c) { return Contains(rejected, c); });
-    if (!rejected.empty() && options_.search_windows_through_loop_closures) {
+    if (!rejected.empty()) {
       loop_links_.clear();
       for (const Constraint& c : constraints_) {
         if (c.kind == ConstraintKind::kInterSubmap) AddLoopLink(c);
@@ -498,7 +507,10 @@ geometry::Rigid2d PoseGraph::GetLocalToGlobal() const {
 
 PoseGraphStats PoseGraph::GetStats() const {
   std::lock_guard<std::mutex> lock(mutex_);
-  return stats_;
+  PoseGraphStats stats = stats_;
+  // An atomic counter: safe to read while a queued step searches.
+  stats.num_gated_loop_closures = constraint_builder_.num_gated();
+  return stats;
 }
 
 }  // namespace scout::slam

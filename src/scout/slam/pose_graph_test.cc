@@ -41,8 +41,9 @@ Rigid2d CentreLinePose(double s) {
 }
 
 // 'heading_bias_rad' per 0.4 m step and 'scale_error' (relative) model
-// local SLAM drift.
-std::vector<NodeInput> MakeDriftingRun(int num_nodes, double heading_bias_rad, double scale_error) {
+// local SLAM drift; 'slip' (robot frame) is added once, at node 'slip_node'.
+std::vector<NodeInput> MakeDriftingRun(int num_nodes, double heading_bias_rad, double scale_error,
+                                       int slip_node = -1, const Rigid2d& slip = Rigid2d()) {
   const auto walls = global_testing::CorridorLoop();
   const grid::RangeDataInserter inserter({});
   std::vector<NodeInput> run;
@@ -57,6 +58,7 @@ std::vector<NodeInput> MakeDriftingRun(int num_nodes, double heading_bias_rad, d
       local = local *
               Rigid2d((1.0 + scale_error) * step.translation(), step.theta() + heading_bias_rad);
     }
+    if (i == slip_node) local = local * slip;
     previous_truth = truth;
     NodeInput node{0.1 * i, truth, local, global_testing::ScanReturns(walls, truth), {}};
     if (i % 10 == 0) {
@@ -190,6 +192,38 @@ TEST(PoseGraphTest, SearchWindowsAlongChainsOfLoopClosuresStillCloseTheLoop) {
   EXPECT_GT(chained.stats.num_loop_closures, 10);
   EXPECT_LT(RmsError(chained_poses, DriveRun()), 0.25 * open_loop);
   EXPECT_LT(RmsError(chained_poses, DriveRun()), RmsError(plain_poses, DriveRun()) + 0.05);
+}
+
+// Once loop closures tie the second lap to the first, the graph knows where
+// the robot is within the window of that chain; a match farther from the
+// estimate is taken for a copy of the place (in the simulated office four
+// such closures, 3.95 m off, bent the map). Here local SLAM slips 1.6 m
+// forward at node 150, after the second lap's first closures: its matches
+// are then 1.6 m from the estimate, inside the trajectory's search window
+// (about 2 m) but beyond the chain's (1 m plus 2 % of a few metres).
+TEST(PoseGraphTest, MatchesFartherFromTheEstimateThanTheChainAllowsAreGated) {
+  const std::vector<NodeInput> run =
+      MakeDriftingRun(170, 0.0, 0.0, /*slip_node=*/150, Rigid2d(1.6, 0.0, 0.0));
+  PoseGraphOptions options = Synchronous();
+  options.loop_closure_chain_travel_m = 0.0;
+  options.gate_loop_closures_by_chain = true;
+  const Outcome gated = Feed(options, run);
+  options.gate_loop_closures_by_chain = false;
+  const Outcome outlier_rounds = Feed(options, run);
+  options.max_outlier_rounds = 0;
+  const Outcome neither = Feed(options, run);
+  const auto error = [&](const Outcome& out, int i) {
+    return (out.nodes[i].pose.translation() - run[i].truth.translation()).norm();
+  };
+  // The gate stops the slip's matches before any solve sees them ...
+  EXPECT_GT(gated.stats.num_gated_loop_closures, 0);
+  EXPECT_EQ(gated.stats.num_rejected_loop_closures, 0);
+  EXPECT_LT(error(gated, 100), 0.03);
+  // ... where without it only the outlier rounds drop them, after a solve ...
+  EXPECT_EQ(outlier_rounds.stats.num_gated_loop_closures, 0);
+  EXPECT_GT(outlier_rounds.stats.num_rejected_loop_closures, 0);
+  // ... and without either they pull the first lap off.
+  EXPECT_GT(error(neither, 100), 0.05);
 }
 
 TEST(PoseGraphTest, ExactLocalSlamStaysExact) {
