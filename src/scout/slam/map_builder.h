@@ -37,7 +37,7 @@ struct SlamStats {
   int num_optimizations = 0;
   int num_loop_closures = 0;
   int num_rejected_loop_closures = 0;  // found, then dropped as outliers by a solve
-  int num_gated_loop_closures = 0;     // matches too far from the estimate (pose_graph.h)
+  int num_gated_loop_closures = 0;     // matches too far from the estimate (PoseGraphStats)
   int num_loop_closure_searches = 0;
   double total_solve_time_s = 0.0;
   int num_scans = 0;  // scans given to AddScan
