@@ -123,90 +123,21 @@ not_run() {
 # The last commit that changed what an explore run does. Runs whose summary
 # is older than it came from an earlier build; stale_runs NAME... lists them,
 # so a table never silently mixes builds.
-# aa01b49: explore's local SLAM (rotation prior 10, few-return scans weighted down) and the
-# no_progress rule (the robot's own map instead of the true coverage); then how runs are
-# scored: where an issued goal lies in the true world (the unreachable count) and the map
-# placed by the rigid fit of the trajectory (coverage); 1d008ff: an issued goal placed in
-# the true world through the submap that mapped it (the unreachable count); c287408: the
-# simulated lidar's beams 0.5 degree apart instead of 1; b36f01e (hand-written Jacobians:
-# other rounding, so other trajectories), ef5e713 (no_progress from what scans map) and
-# 3a364b5 (pose-graph solves applied 10 nodes after they start); 441f1b8 (narrow passages keep
-# 0.05 m, the explorer's frontier inflation 0.25 m), 3e0b7fa and 636f022 (backing up checked
-# against the last scans), 2070b2d (the stand-off stops outside narrow passages) and aa6452d
-# (loop closures far from the estimate must stay the one best in a wider window). 93a957a's
-# search windows along chains of loop closures are off by default (config/default.yaml), so
-# runs are unchanged by it. aa6452d leaves the Radish and fr079 replays as they were (same
-# loop closures and ATE, checked on all eight on 2026-12-03), so REPLAY_SLAM_COMMIT stays.
-EXPLORE_BEHAVIOUR_COMMIT=aa6452d
-# d725b7b (a goal fails on its second stuck recovery, not its first) and 8a6e5c2 (backing
-# up stops at a mapped obstacle behind) change only runs with a stuck recovery; 137c2f9
-# (failed goals next to reachable frontier tried once more before finishing) only runs
-# that ended with reachable frontier left. An older run without them would repeat
-# exactly; one with them is stale.
-EXPLORE_STUCK_COMMIT=8a6e5c2
-EXPLORE_RETRY_COMMIT=137c2f9
-# 216716d (a robot the collision guard stops turns away from what stops it; the scan memory
-# that backing up is checked against ages only while the robot moves) changes only runs in
-# which the guard stopped the robot or the robot backed up (goals.guard_stops or
-# goals.recoveries above 0).
-EXPLORE_GUARD_COMMIT=216716d
-# 512946f (navigation points weigh information gain 1 instead of 3) changes the runs of the two
-# policies that rank by it, scout and meanshift-centres; nearest and explore-lite are as before.
-EXPLORE_POLICY_COMMIT=512946f
-# d13fac7 (Scout's policy passes over candidates whose path the latest scan contradicts) changes
-# the scout policy's runs only; an older one does not record whether the check would have fired.
-EXPLORE_SCAN_CHECK_COMMIT=d13fac7
-# 9847fb7 (the scan check also uses the returns of the last 10 s of scans) changes the scout
-# policy's runs only, like d13fac7.
-EXPLORE_SCAN_MEMORY_COMMIT=9847fb7
-# ea2a217, 93f89d1 and 428423a (a confined robot's last resort, when the no-progress timer runs out) change only runs
-# that ended no_progress by that timer ("frontier_left": null, the goals had not run out).
-EXPLORE_LAST_RESORT_COMMIT=428423a
-# d4f3d46 (backing up stops at a mapped obstacle beside and behind a disc the map has clear)
-# changes only runs that backed up (goals.recoveries above 0).
-EXPLORE_BACK_UP_COMMIT=d4f3d46
-# 2c431ab (a robot the collision guard stops turns the way that clears the way ahead by far the
-# shorter turn, not toward what stops it) changes only runs in which the guard stopped the robot
-# (goals.guard_stops above 0).
-EXPLORE_STOP_TURN_COMMIT=2c431ab
-# f48c5a4 (loop closures farther from the estimate than their chain's search window are
-# rejected) changes the runs in which such a match came up, which an older summary does not
-# record (a newer one counts them, slam.gated_loop_closures): every older explore run is stale.
-EXPLORE_GATE_COMMIT=f48c5a4
+# f48c5a4: loop closures farther from the estimate than the search window of their chain of
+# submaps and loop closures are rejected. It changes the runs in which such a match came up,
+# which an older summary does not record (a newer one counts them, slam.gated_loop_closures),
+# so every older explore run is stale. Before it, conditional rules here spared older runs
+# that the commits since aa6452d could not have changed (those with no stuck recovery, guard
+# stop, reachable frontier left or no-progress timeout, or of another policy): d725b7b and
+# 8a6e5c2 (stuck recoveries), 137c2f9 (failed goals retried), 216716d and 2c431ab (guard
+# stops), 512946f (information gain 1), d13fac7 and 9847fb7 (the scan check), 428423a (the last
+# resort), d4f3d46 (backing up); f48c5a4 makes them all moot (see git history for the rules).
+EXPLORE_BEHAVIOUR_COMMIT=f48c5a4
 stale_runs() {
-  local name f
-  for name in "$@"; do
-    f=$OUT/$name/summary.json
-    [[ -f $f ]] || continue
-    if made_before "$EXPLORE_BEHAVIOUR_COMMIT" "$name" || made_before "$EXPLORE_GATE_COMMIT" "$name" ||
-      { made_before "$EXPLORE_STUCK_COMMIT" "$name" && grep -Eq '"recoveries": *[1-9]' "$f"; } ||
-      { made_before "$EXPLORE_RETRY_COMMIT" "$name" &&
-        grep -Eq '"reachable_frontier_left": *[1-9]' "$f"; } ||
-      { made_before "$EXPLORE_GUARD_COMMIT" "$name" &&
-        grep -Eq '"(guard_stops|recoveries)": *[1-9]' "$f"; } ||
-      { made_before "$EXPLORE_POLICY_COMMIT" "$name" &&
-        grep -Eq '"goals_policy": *"(scout|meanshift-centres)"' "$f"; } ||
-      { made_before "$EXPLORE_SCAN_MEMORY_COMMIT" "$name" &&
-        grep -Eq '"goals_policy": *"scout"' "$f"; } ||
-      [[ -n $(stale_by_back_up "$name") ]] ||
-      { made_before "$EXPLORE_STOP_TURN_COMMIT" "$name" && grep -Eq '"guard_stops": *[1-9]' "$f"; } ||
-      { made_before "$EXPLORE_LAST_RESORT_COMMIT" "$name" &&
-        grep -Eq '"terminated": *"no_progress"' "$f" && grep -Eq '"frontier_left": *null' "$f"; }; then
-      printf '`%s` ' "$name"
-    fi
-  done
-}
-
-# stale_by_back_up NAME...: the explore runs that backed up with a build older than
-# EXPLORE_BACK_UP_COMMIT (the note on the runs made again with it applies while any is left).
-stale_by_back_up() {
   local name
   for name in "$@"; do
     [[ -f $OUT/$name/summary.json ]] || continue
-    if made_before "$EXPLORE_BACK_UP_COMMIT" "$name" &&
-      grep -Eq '"recoveries": *[1-9]' "$OUT/$name/summary.json"; then
-      printf '`%s` ' "$name"
-    fi
+    if made_before "$EXPLORE_BEHAVIOUR_COMMIT" "$name"; then printf '`%s` ' "$name"; fi
   done
   return 0
 }
@@ -409,22 +340,10 @@ write_document() {
     if [[ -n $stale ]]; then
       echo "Made with a build older than commit $EXPLORE_BEHAVIOUR_COMMIT, the last that changed what"
       echo "every policy's robot does or how runs are scored (see \`scripts/results_document.sh\`;"
-      echo "$EXPLORE_BEHAVIOUR_COMMIT: loop closures far from the estimate must stay the one best in a"
-      echo "window three times that wide); or older than"
-      echo "$EXPLORE_STUCK_COMMIT with a stuck recovery, or than $EXPLORE_RETRY_COMMIT with reachable frontier"
-      echo "left at the end, or than $EXPLORE_GUARD_COMMIT with a guard stop or a stuck recovery, or than"
-      echo "$EXPLORE_BACK_UP_COMMIT with a stuck recovery (backing up stops at a mapped obstacle beside and"
-      echo "behind the disc), or than $EXPLORE_STOP_TURN_COMMIT with a guard stop (a stopped robot turns the way"
-      echo "that clears the way ahead by far the shorter turn), or than"
-      echo "$EXPLORE_POLICY_COMMIT for the scout and meanshift-centres policies (information gain weighed"
-      echo "1 instead of 3), or than $EXPLORE_SCAN_MEMORY_COMMIT for the scout policy (paths checked against"
-      echo "the returns of the last 10 s of scans, $EXPLORE_SCAN_CHECK_COMMIT against the latest scan; the runs"
-      echo "those commits change), so not like-for-like with the other runs: $stale"
-      if [[ -n $(stale_by_back_up "${EXPLORE[@]}") ]]; then
-        echo "($EXPLORE_BACK_UP_COMMIT left all 52 runs that backed up and were made again on 2026-12-05"
-        echo "as they were, \`coverage.csv\` byte for byte: the 48 outside the museum and the scout"
-        echo "policy's four in the museum; the museum's other ten, at 35-40 min each, were not.)"
-      fi
+      echo "$EXPLORE_BEHAVIOUR_COMMIT: loop closures farther from the estimate than the search window of"
+      echo "their chain of submaps and loop closures are rejected; it changes only the runs in which"
+      echo "such a match came up, which an older run does not record), so not like-for-like with the"
+      echo "other runs: $stale"
       echo
     fi
     tables explore "${EXPLORE[@]}"

@@ -297,6 +297,20 @@ TEST_F(ExploreCli, ExploresASmallMapAndWritesEveryOutput) {
   EXPECT_LT((estimated - truth).norm(), 0.2);
 }
 
+// The rows of a TUM trajectory file (stamp x y z qx qy qz qw), comments skipped.
+std::vector<std::vector<double>> ReadTum(const fs::path& path) {
+  std::vector<std::vector<double>> rows;
+  std::istringstream in(ReadFile(path));
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream fields(line);
+    std::vector<double> row;
+    for (double v; fields >> v;) row.push_back(v);
+    rows.push_back(row);
+  }
+  return rows;
+}
+
 TEST_F(ExploreCli, RecordsItsSensorStreamForReplayAgainstTheTruePoses) {
   const fs::path out = dir_ / "out";
   const std::string rooms = " --world " + (dir_ / "rooms.yaml").string();
@@ -321,6 +335,25 @@ TEST_F(ExploreCli, RecordsItsSensorStreamForReplayAgainstTheTruePoses) {
   EXPECT_LT(replayed["reference"]["ate_rmse_m"].get<double>(), 0.1);
   EXPECT_EQ(replayed["slam"]["settings"], "explore");
   EXPECT_EQ(replayed["slam"]["synchronous"], true);
+  // The log holds every odometry sample and every number exactly, so the
+  // replay repeats the loop's SLAM: the same nodes at the same poses, but
+  // for the loop's placement of its map frame in the world (a translation
+  // here, the start's heading being 0).
+  EXPECT_EQ(replayed["odometry_source"], "odometry messages");
+  const std::vector<std::vector<double>> looped = ReadTum(out / "trajectory.tum");
+  const std::vector<std::vector<double>> replayed_poses =
+      ReadTum(dir_ / "replay" / "trajectory.tum");
+  ASSERT_EQ(looped.size(), replayed_poses.size());
+  ASSERT_GT(looped.size(), 100u);
+  const double world_x = looped[0][1] - replayed_poses[0][1];
+  const double world_y = looped[0][2] - replayed_poses[0][2];
+  for (size_t i = 0; i < looped.size(); ++i) {
+    EXPECT_EQ(looped[i][0], replayed_poses[i][0]) << i;  // stamp
+    EXPECT_NEAR(looped[i][1] - replayed_poses[i][1], world_x, 1e-9) << i;
+    EXPECT_NEAR(looped[i][2] - replayed_poses[i][2], world_y, 1e-9) << i;
+    EXPECT_EQ(looped[i][6], replayed_poses[i][6]) << i;  // qz
+    EXPECT_EQ(looped[i][7], replayed_poses[i][7]) << i;  // qw
+  }
   // The same as the explorer's settings (config/default.yaml's explore section)
   // written out for slam.local and the pose graph by hand: the same trajectory.
   scout::WriteTextFileAtomically(

@@ -289,9 +289,10 @@ CLI::App* AddExploreCommand(CLI::App& app, ExploreArgs* args) {
   cmd->add_option("--start", args->start, "start position X,Y in metres (default: the world's)");
   cmd->add_flag("--quiet", args->quiet, "print only the final summary");
   cmd->add_flag("--record-log", args->record_log,
-                "also write sensor.log: every scan with its true and odometry pose as a CARMEN "
-                "log, to re-run SLAM on it as the loop ran it with `scout replay sensor.log "
-                "--reference sensor.log --explore-slam`");
+                "also write sensor.log: every scan with its true and odometry pose and every "
+                "odometry sample as a CARMEN log, numbers exact, to re-run the loop's SLAM on it "
+                "to the digit with `scout replay sensor.log --reference sensor.log "
+                "--explore-slam`");
   cmd->add_option("--status", args->status_file,
                   "keep a JSON status of the running exploration in this file (state, poses, "
                   "goal, coverage, counters), rewritten atomically every 5 s of simulated time");
@@ -328,6 +329,8 @@ int RunExplore(const ExploreArgs& args) {
                                   const geometry::Rigid2d& odometry_pose) {
       log->AddScan(scan, true_pose, odometry_pose);
     });
+    loop.set_odometry_recorder(
+        [&log](const sensor::Odometry& odometry) { log->AddOdometry(odometry); });
   }
 
   std::optional<ExploreStatusFile> status;

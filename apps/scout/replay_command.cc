@@ -196,8 +196,9 @@ CLI::App* AddReplayCommand(CLI::App& app, ReplayArgs* args) {
                 "run global SLAM in the calling thread (deterministic; overrides the config)");
   cmd->add_flag("--explore-slam", args->explore_slam,
                 "run SLAM with the settings `scout explore` runs it with (explore.local_slam "
-                "instead of slam.local's, and its synchronous solves): for a sensor.log written "
-                "by `scout explore --record-log`");
+                "instead of slam.local's, and its synchronous solves) and the log's ODOM "
+                "samples when it has them: for a sensor.log written by `scout explore "
+                "--record-log`, whose SLAM it then repeats to the digit");
   cmd->add_flag("--quiet", args->quiet, "print only the final summary");
   return cmd;
 }
@@ -244,13 +245,16 @@ int RunReplay(const ReplayArgs& args) {
   // CARMEN logs carry the odometry pose in every laser line, at the scan's own
   // time. That is the odometry local SLAM needs; the ODOM messages of the
   // Radish "-corrected" logs restart from the corrected pose after each scan,
-  // so differences between them are not robot motion.
+  // so differences between them are not robot motion. A log of `scout explore
+  // --record-log` (--explore-slam) holds every odometry sample the loop's SLAM
+  // got as ODOM messages: those, so the replay repeats the loop's SLAM.
   if (RetimeIfCoarse(&dataset)) {
     std::cerr << "scout: warning: " << args.dataset << ": most scans repeat the time before; "
               << "replayed " << kRetimedScanPeriodS << " s apart\n";
   }
   std::string odometry_source = dataset.odometry.empty() ? "none" : "odometry messages";
-  if (!dataset.scan_odometry.empty()) {
+  const bool recorded_samples = args.explore_slam && !dataset.odometry.empty();
+  if (!dataset.scan_odometry.empty() && !recorded_samples) {
     dataset.odometry = dataset.scan_odometry;
     odometry_source = "laser lines";
   }

@@ -113,15 +113,6 @@ make_run explore-c "$(git rev-parse --short=12 "$EXPLORE_BEHAVIOUR_COMMIT~1")"
 [[ $(stale_section_run explore explore-c) == '`explore-c` ' ]] || fail "an explore run older than $EXPLORE_BEHAVIOUR_COMMIT is not stale"
 git rev-parse --short=12 "$EXPLORE_BEHAVIOUR_COMMIT" >"$OUT/explore-c/build.txt"
 [[ -z $(stale_section_run explore explore-c) ]] || fail "an explore run made by $EXPLORE_BEHAVIOUR_COMMIT is stale"
-# Made before the last resort: stale only when the no-progress timer ended it.
-echo '{"goals": {"frontier_left": null}, "terminated": "no_progress"}' >"$OUT/explore-c/summary.json"
-[[ $(stale_section_run explore explore-c) == '`explore-c` ' ]] ||
-  fail "a run the no-progress timer ended before $EXPLORE_LAST_RESORT_COMMIT is not stale"
-echo '{"goals": {"frontier_left": 12}, "terminated": "no_progress"}' >"$OUT/explore-c/summary.json"
-[[ -z $(stale_section_run explore explore-c) ]] || fail "a run whose goals ran out is stale"
-echo '{"goals": {"frontier_left": null}, "terminated": "no_progress"}' >"$OUT/explore-c/summary.json"
-git rev-parse --short=12 "$EXPLORE_LAST_RESORT_COMMIT" >"$OUT/explore-c/build.txt"
-[[ -z $(stale_section_run explore explore-c) ]] || fail "a run made by $EXPLORE_LAST_RESORT_COMMIT is stale"
 # A run whose input is absent is listed as skipped, with the missing file, not as failed.
 declare -A COMMAND=([replay-b]="scout replay b" [replay-c]="scout replay c")
 declare -A ABSENT=([replay-b]=/no/data/b.log.gz)

@@ -117,6 +117,7 @@ void ExplorationLoop::FeedSensors() {
 
 void ExplorationLoop::FeedSensorsUntimed() {
   if (std::optional<sensor::Odometry> odometry = robot_.MaybeOdometry()) {
+    if (odometry_recorder_) odometry_recorder_(*odometry);
     builder_->AddOdometry(*odometry);
     latest_odometry_ = odometry->pose;
   }

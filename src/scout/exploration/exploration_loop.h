@@ -20,6 +20,7 @@
 #include "scout/grid/incremental_fusion.h"
 #include "scout/grid/occupancy_map.h"
 #include "scout/sensor/laser_scan.h"
+#include "scout/sensor/odometry.h"
 #include "scout/sim/simulated_robot.h"
 #include "scout/sim/world.h"
 #include "scout/slam/map_builder.h"
@@ -189,6 +190,9 @@ class ExplorationLoop {
   using ScanRecorder =
       std::function<void(const sensor::LaserScan& scan, const geometry::Rigid2d& true_pose,
                          const geometry::Rigid2d& odometry_pose)>;
+  // Sees every odometry sample as SLAM gets it (before the scan of the same
+  // step, as SLAM gets them).
+  using OdometryRecorder = std::function<void(const sensor::Odometry& odometry)>;
 
   // Throws InputError on bad options, a start the robot does not fit at, or
   // no reachable free space.
@@ -204,6 +208,9 @@ class ExplorationLoop {
 
   // Call before Run().
   void set_scan_recorder(ScanRecorder recorder) { scan_recorder_ = std::move(recorder); }
+  void set_odometry_recorder(OdometryRecorder recorder) {
+    odometry_recorder_ = std::move(recorder);
+  }
 
   const slam::MapBuilder& map_builder() const { return *builder_; }
   const frontier::FrontierEngine& frontier_engine() const { return engine_; }
@@ -300,6 +307,7 @@ class ExplorationLoop {
   std::vector<explore::SubmapPose> submap_poses_;
 
   ScanRecorder scan_recorder_;
+  OdometryRecorder odometry_recorder_;
   ExplorationResult result_;
   MapProgress map_progress_;
   double last_resort_s_ = -1e300;

@@ -1,5 +1,6 @@
 #include "scout/io/carmen_log_writer.h"
 
+#include <charconv>
 #include <cmath>
 #include <numbers>
 
@@ -8,17 +9,21 @@
 namespace scout::io {
 namespace {
 
-// FLASER stores ranges and poses as text; millimetres and microradians are
-// below any lidar's noise.
-void AppendNumber(std::string* line, double value, int decimals) {
+// Numbers are written in the shortest text that reads back to the same
+// float (ranges) or double (poses, times), so a replay of the log feeds SLAM
+// exactly what the closed loop fed it and repeats its trajectory bit for bit.
+template <typename T>
+void AppendNumber(std::string* line, T value) {
   if (std::isnan(value)) {
     *line += " nan";
   } else if (std::isinf(value)) {
     *line += value > 0 ? " inf" : " -inf";
   } else {
     char text[64];
-    std::snprintf(text, sizeof(text), " %.*f", decimals, value);
-    *line += text;
+    const auto [end, error] = std::to_chars(text, text + sizeof(text), value);
+    (void)error;  // 64 characters hold any float or double
+    *line += ' ';
+    line->append(text, end);
   }
 }
 
@@ -51,7 +56,9 @@ CarmenLogWriter::CarmenLogWriter(const std::filesystem::path& path) : path_(path
   }
   std::fputs(
       "# CARMEN log written by Scout: FLASER lines hold the true pose as x y theta and\n"
-      "# the odometry pose as odom_x odom_y odom_theta; beams without a return are inf.\n",
+      "# the odometry pose as odom_x odom_y odom_theta; beams without a return are inf.\n"
+      "# ODOM lines hold every odometry sample SLAM got (`scout replay --explore-slam`\n"
+      "# feeds them, and so repeats the run's SLAM exactly).\n",
       file_);
 }
 
@@ -66,19 +73,36 @@ void CarmenLogWriter::AddScan(const sensor::LaserScan& scan, const geometry::Rig
                       static_cast<int>(scan.ranges.size()), path_.string());
   std::string line = "FLASER " + std::to_string(scan.ranges.size());
   line.reserve(line.size() + 8 * scan.ranges.size() + 160);
-  for (const float r : scan.ranges) AppendNumber(&line, r, 3);
+  for (const float r : scan.ranges) AppendNumber(&line, r);
   for (const double v :
        {pose.x(), pose.y(), pose.theta(), odometry.x(), odometry.y(), odometry.theta()}) {
-    AppendNumber(&line, v, 6);
+    AppendNumber(&line, v);
   }
-  AppendNumber(&line, scan.time_s, 6);
+  AppendNumber(&line, scan.time_s);
   line += " scout-sim";
-  AppendNumber(&line, scan.time_s, 6);
+  AppendNumber(&line, scan.time_s);
   line += '\n';
   if (std::fputs(line.c_str(), file_) == EOF) {
     throw InputError(path_.string() + ": write failed (disk full?)");
   }
   ++num_scans_;
+}
+
+void CarmenLogWriter::AddOdometry(const sensor::Odometry& odometry) {
+  if (file_ == nullptr) throw InputError(path_.string() + ": written to after Close()");
+  std::string line = "ODOM";
+  for (const double v : {odometry.pose.x(), odometry.pose.y(), odometry.pose.theta()}) {
+    AppendNumber(&line, v);
+  }
+  line += " 0 0 0";  // tv rv accel: not recorded
+  AppendNumber(&line, odometry.time_s);
+  line += " scout-sim";
+  AppendNumber(&line, odometry.time_s);
+  line += '\n';
+  if (std::fputs(line.c_str(), file_) == EOF) {
+    throw InputError(path_.string() + ": write failed (disk full?)");
+  }
+  ++num_odometry_;
 }
 
 void CarmenLogWriter::Close() {

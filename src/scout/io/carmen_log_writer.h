@@ -12,6 +12,7 @@
 
 #include "scout/geometry/rigid_transform.h"
 #include "scout/sensor/laser_scan.h"
+#include "scout/sensor/odometry.h"
 
 namespace scout::io {
 
@@ -39,17 +40,22 @@ class CarmenLogWriter {
   // not fit FLASER (CheckFlaserGeometry) or the write fails.
   void AddScan(const sensor::LaserScan& scan, const geometry::Rigid2d& pose,
                const geometry::Rigid2d& odometry);
+  // Appends one ODOM line: the odometry pose at its time (velocities 0, not
+  // recorded). Throws InputError if the write fails.
+  void AddOdometry(const sensor::Odometry& odometry);
 
   // Flushes and closes the file. Throws InputError naming the file if the data
   // could not be written completely.
   void Close();
 
   int num_scans() const { return num_scans_; }
+  int num_odometry() const { return num_odometry_; }
 
  private:
   std::filesystem::path path_;
   std::FILE* file_ = nullptr;
   int num_scans_ = 0;
+  int num_odometry_ = 0;
 };
 
 }  // namespace scout::io

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <random>
+#include <vector>
 
 #include "scout/common/error.h"
 #include "scout/grid/test_temp_directory.h"
@@ -57,6 +59,45 @@ TEST(CarmenLogWriter, WhatItWritesReadsBackWithPosesOdometryTimesAndMissingRetur
   EXPECT_NEAR(d.scan_odometry[0].pose.x(), 1.1, 1e-6);
   EXPECT_NEAR(d.scan_odometry[0].pose.y(), 2.2, 1e-6);
   EXPECT_NEAR(d.scan_odometry[1].pose.theta(), 0.46, 1e-6);
+  EXPECT_TRUE(d.warnings.empty());
+}
+
+// Ranges, poses, times and odometry samples read back bit for bit, so a
+// replay feeds SLAM exactly what the loop fed it.
+TEST(CarmenLogWriter, NumbersAndOdometrySamplesReadBackExactly) {
+  TestTempDirectory dir;
+  const auto path = dir.path() / "exact.log";
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> range(0.05, 8.0), coordinate(-50.0, 50.0),
+      angle(-3.14, 3.14);
+  sensor::LaserScan scan = HalfCircleScan(361, 12.345678901234567);
+  for (float& r : scan.ranges) r = static_cast<float>(range(rng));
+  const geometry::Rigid2d pose(coordinate(rng), coordinate(rng), angle(rng));
+  const geometry::Rigid2d odometry(coordinate(rng), coordinate(rng), angle(rng));
+  const std::vector<sensor::Odometry> samples = {
+      {12.3, geometry::Rigid2d(coordinate(rng), coordinate(rng), angle(rng))},
+      {12.345678901234567, odometry}};
+  {
+    CarmenLogWriter writer(path);
+    for (const sensor::Odometry& o : samples) writer.AddOdometry(o);
+    writer.AddScan(scan, pose, odometry);
+    EXPECT_EQ(writer.num_odometry(), 2);
+    writer.Close();
+  }
+  const Dataset d = LoadDataset(path);
+  ASSERT_EQ(d.scans.size(), 1u);
+  EXPECT_EQ(d.scans[0].time_s, scan.time_s);
+  EXPECT_EQ(d.scans[0].ranges, scan.ranges);
+  EXPECT_EQ(d.scan_poses[0].x(), pose.x());
+  EXPECT_EQ(d.scan_poses[0].y(), pose.y());
+  EXPECT_EQ(d.scan_poses[0].theta(), pose.theta());
+  ASSERT_EQ(d.odometry.size(), 2u);
+  for (size_t i = 0; i < samples.size(); ++i) {
+    EXPECT_EQ(d.odometry[i].time_s, samples[i].time_s);
+    EXPECT_EQ(d.odometry[i].pose.x(), samples[i].pose.x());
+    EXPECT_EQ(d.odometry[i].pose.y(), samples[i].pose.y());
+    EXPECT_EQ(d.odometry[i].pose.theta(), samples[i].pose.theta());
+  }
   EXPECT_TRUE(d.warnings.empty());
 }
 
