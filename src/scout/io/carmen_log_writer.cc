@@ -78,13 +78,7 @@ void CarmenLogWriter::AddScan(const sensor::LaserScan& scan, const geometry::Rig
        {pose.x(), pose.y(), pose.theta(), odometry.x(), odometry.y(), odometry.theta()}) {
     AppendNumber(&line, v);
   }
-  AppendNumber(&line, scan.time_s);
-  line += " scout-sim";
-  AppendNumber(&line, scan.time_s);
-  line += '\n';
-  if (std::fputs(line.c_str(), file_) == EOF) {
-    throw InputError(path_.string() + ": write failed (disk full?)");
-  }
+  WriteLine(&line, scan.time_s);
   ++num_scans_;
 }
 
@@ -95,14 +89,18 @@ void CarmenLogWriter::AddOdometry(const sensor::Odometry& odometry) {
     AppendNumber(&line, v);
   }
   line += " 0 0 0";  // tv rv accel: not recorded
-  AppendNumber(&line, odometry.time_s);
-  line += " scout-sim";
-  AppendNumber(&line, odometry.time_s);
-  line += '\n';
-  if (std::fputs(line.c_str(), file_) == EOF) {
+  WriteLine(&line, odometry.time_s);
+  ++num_odometry_;
+}
+
+void CarmenLogWriter::WriteLine(std::string* line, double time_s) {
+  AppendNumber(line, time_s);  // ipc_timestamp
+  *line += " scout-sim";
+  AppendNumber(line, time_s);  // logger_timestamp
+  *line += '\n';
+  if (std::fputs(line->c_str(), file_) == EOF) {
     throw InputError(path_.string() + ": write failed (disk full?)");
   }
-  ++num_odometry_;
 }
 
 void CarmenLogWriter::Close() {

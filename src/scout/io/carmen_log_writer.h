@@ -52,6 +52,10 @@ class CarmenLogWriter {
   int num_odometry() const { return num_odometry_; }
 
  private:
+  // Ends 'line' with the timestamps and host name every message carries and
+  // writes it. Throws InputError if the write fails.
+  void WriteLine(std::string* line, double time_s);
+
   std::filesystem::path path_;
   std::FILE* file_ = nullptr;
   int num_scans_ = 0;
