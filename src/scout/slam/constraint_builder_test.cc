@@ -5,6 +5,7 @@
 #include <cmath>
 #include <memory>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "scout/slam/global_test_world.h"
@@ -254,18 +255,24 @@ std::vector<Wall> RepeatingHall() {
   return walls;
 }
 
+// The hall's submap, mapped along x = -10 .. 10, and the scan of a robot
+// standing at x = 0.
+std::pair<std::shared_ptr<const grid::ProbabilityGrid>, PointCloud> RepeatingHallAtItsCentre() {
+  const std::vector<Wall> walls = RepeatingHall();
+  std::vector<Rigid2d> poses;
+  for (int i = 0; i <= 40; ++i) poses.emplace_back(-10.0 + 0.5 * i, 0.1 * std::sin(i), 0.0);
+  return {
+      std::make_shared<const grid::ProbabilityGrid>(global_testing::BuildGrid(walls, {}, poses)),
+      global_testing::ScanReturns(walls, Rigid2d(0.0, 0.0, 0.0))};
+}
+
 // The robot stands at x = 0; drift put it at x = 5.2. The search window
 // (1 m + 2 % of 125 m = 3.5 m) reaches the copy of its place at x = 8 but not
 // x = 0, so the match lands 8 m off. Searching again around that match, three
 // times its distance from the estimate (8.4 m), reaches x = 0 and x = 16,
 // which look the same: the match is no longer the one best, and is rejected.
 TEST(ConstraintBuilderTest, AMatchFarFromTheEstimateMustStayUniqueInAWiderWindow) {
-  const std::vector<Wall> walls = RepeatingHall();
-  std::vector<Rigid2d> poses;
-  for (int i = 0; i <= 40; ++i) poses.emplace_back(-10.0 + 0.5 * i, 0.1 * std::sin(i), 0.0);
-  const auto grid =
-      std::make_shared<const grid::ProbabilityGrid>(global_testing::BuildGrid(walls, {}, poses));
-  const PointCloud scan = global_testing::ScanReturns(walls, Rigid2d(0.0, 0.0, 0.0));
+  const auto [grid, scan] = RepeatingHallAtItsCentre();
   const Rigid2d estimate(5.2, 0.15, 0.02);
   ConstraintBuilderOptions options;
   options.min_overlap = 0.0;
@@ -293,12 +300,7 @@ TEST(ConstraintBuilderTest, AMatchFarFromTheEstimateMustStayUniqueInAWiderWindow
 // estimate is known within the window of that chain, and the copy 2.8 m
 // from the estimate above is rejected however well it scores.
 TEST(ConstraintBuilderTest, AMatchFartherFromTheEstimateThanTheGateIsRejected) {
-  const std::vector<Wall> walls = RepeatingHall();
-  std::vector<Rigid2d> poses;
-  for (int i = 0; i <= 40; ++i) poses.emplace_back(-10.0 + 0.5 * i, 0.1 * std::sin(i), 0.0);
-  const auto grid =
-      std::make_shared<const grid::ProbabilityGrid>(global_testing::BuildGrid(walls, {}, poses));
-  const PointCloud scan = global_testing::ScanReturns(walls, Rigid2d(0.0, 0.0, 0.0));
+  const auto [grid, scan] = RepeatingHallAtItsCentre();
   const Rigid2d estimate(5.2, 0.15, 0.02);
   ConstraintBuilderOptions options;
   options.min_overlap = 0.0;
