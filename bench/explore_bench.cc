@@ -2,15 +2,18 @@
 // map (the largest map an office run plans on): the planning map, the path
 // distance field every goal selection builds, and the coverage measurement
 // done at every map update. These dominate `scout explore`'s "goals" and
-// "map_fusion" wall time (summary.json wall_time_breakdown_s).
+// "map_fusion" wall time (summary.json wall_time_breakdown_s). Last, the whole
+// loop on a small building, for its speed against simulated time.
 
 #include <benchmark/benchmark.h>
 
 #include <cmath>
 #include <vector>
 
+#include "scout/exploration/exploration_loop.h"
 #include "scout/exploration/exploration_options.h"
 #include "scout/exploration/ground_truth.h"
+#include "scout/exploration/test_worlds.h"
 #include "scout/explore/path_distance_field.h"
 #include "scout/explore/planning_map.h"
 #include "scout/sim/make_world.h"
@@ -104,5 +107,22 @@ void BM_MappedFreeM2(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_MappedFreeM2)->Unit(benchmark::kMillisecond);
+
+// The whole closed loop (simulator, SLAM, frontiers, goals) on the 9 m x 6 m
+// building of exploration_loop_test, which asserts what the run achieves; this
+// measures how fast it runs. sim_per_wall is simulated seconds per wall
+// second (the office target asks for at least 20).
+void BM_ExploreSmallBuilding(benchmark::State& state) {
+  const scout::sim::World world = scout::exploration::testing::SmallBuilding();
+  double sim_s = 0.0;
+  for (auto _ : state) {
+    scout::exploration::ExplorationLoop loop(world, {}, 7);
+    const scout::exploration::ExplorationResult r = loop.Run();
+    sim_s += r.sim_time_s;
+  }
+  state.counters["sim_s"] = benchmark::Counter(sim_s, benchmark::Counter::kAvgIterations);
+  state.counters["sim_per_wall"] = benchmark::Counter(sim_s, benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_ExploreSmallBuilding)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace

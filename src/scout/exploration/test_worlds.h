@@ -1,7 +1,8 @@
 #ifndef SCOUT_EXPLORATION_TEST_WORLDS_H_
 #define SCOUT_EXPLORATION_TEST_WORLDS_H_
 
-// Test-only helper (included by the exploration tests, not by the library).
+// Test-only helper (included by the exploration tests and scout_explore_bench,
+// not by the library).
 
 #include "scout/sim/world.h"
 
