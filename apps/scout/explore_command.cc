@@ -27,6 +27,7 @@
 #include "scout/io/map_picture.h"
 #include "scout/io/output_directory.h"
 #include "scout/io/plan_picture.h"
+#include "scout/io/slam_summary.h"
 #include "scout/io/trajectory_metrics.h"
 #include "scout/io/tum_trajectory.h"
 #include "scout/sim/lidar.h"
@@ -219,16 +220,8 @@ nlohmann::json Summary(const ExploreArgs& args, const exploration::ExplorationLo
   s["collision_places"] = collisions;
   s["ate_rmse_m"] = ate_rmse_m;
   const slam::SlamStats stats = loop.map_builder().GetStats();
-  s["slam"] = {{"nodes", stats.num_nodes},
-               {"submaps", stats.num_submaps},
-               {"optimizations", stats.num_optimizations},
-               {"loop_closures", stats.num_loop_closures},
-               {"rejected_loop_closures", stats.num_rejected_loop_closures},
-               {"gated_loop_closures", stats.num_gated_loop_closures},
-               {"loop_closure_searches", stats.num_loop_closure_searches},
-               {"solve_time_s", stats.total_solve_time_s},
-               {"scans", stats.num_scans},
-               {"synchronous", loop.options().slam.pose_graph.synchronous}};
+  s["slam"] = io::SlamSummary(stats, loop.options().slam.pose_graph.synchronous);
+  s["slam"]["scans"] = stats.num_scans;
   s["frontier"] = io::FrontierSummary(loop.frontier_engine());
   const exploration::LoopTimings& t = r.timings;
   s["wall_time_breakdown_s"] = {{"simulation", t.simulation_s},

@@ -27,6 +27,7 @@
 #include "scout/io/output_directory.h"
 #include "scout/io/replay_reference.h"
 #include "scout/io/scan_consistency.h"
+#include "scout/io/slam_summary.h"
 #include "scout/io/trajectory_metrics.h"
 #include "scout/io/tum_trajectory.h"
 #include "scout/slam/map_builder.h"
@@ -342,17 +343,9 @@ int RunReplay(const ReplayArgs& args) {
   summary["wall_time_s"] = wall_time_s;
   summary["realtime_factor"] = data_duration_s / std::max(1e-9, wall_time_s);
   summary["peak_rss_mb"] = PeakResidentSetMiB();
-  summary["slam"] = {{"nodes", stats.num_nodes},
-                     {"submaps", stats.num_submaps},
-                     {"optimizations", stats.num_optimizations},
-                     {"loop_closures", stats.num_loop_closures},
-                     {"rejected_loop_closures", stats.num_rejected_loop_closures},
-                     {"gated_loop_closures", stats.num_gated_loop_closures},
-                     {"loop_closure_searches", stats.num_loop_closure_searches},
-                     {"solve_time_s", stats.total_solve_time_s},
-                     {"submap_events", stats.num_submap_events},
-                     {"synchronous", config.slam.pose_graph.synchronous},
-                     {"settings", args.explore_slam ? "explore" : "slam"}};
+  summary["slam"] = io::SlamSummary(stats, config.slam.pose_graph.synchronous);
+  summary["slam"]["submap_events"] = stats.num_submap_events;
+  summary["slam"]["settings"] = args.explore_slam ? "explore" : "slam";
   const std::vector<int> node_scans = NodeScans(dataset, nodes);
   summary["consistency"] =
       ConsistencySummary(dataset, nodes, node_scans, reference ? &*reference : nullptr,
