@@ -2,8 +2,8 @@
 # from `scout results-table`, which prints the command of each run above it; runs that do not
 # exist (not run yet, or failed) are listed as such with the command that would produce them.
 
-# build_commit: the commit the scout binary was built from, "+modified" when the sources differ
-# from it (the run is then attributed to that commit, and the document says so).
+# build_commit: the commit the tree is at, "+modified" when its sources differ from it (a run
+# is then attributed to that commit, and the document says so).
 build_commit() {
   local commit
   commit=$(git rev-parse --short=12 HEAD 2>/dev/null) || { echo unknown; return 0; }
@@ -11,6 +11,19 @@ build_commit() {
     echo "$commit +modified"
   else
     echo "$commit"
+  fi
+}
+
+# binary_commit SCOUT: the commit the scout binary was built from, as its --version names it
+# ("scout 0.1.0 (0123456789ab +modified)", written at build time by cmake/build_commit.cmake);
+# build_commit, the tree's, for a binary built before it named its commit.
+binary_commit() {
+  local version
+  version=$("$1" --version 2>/dev/null) || version=
+  if [[ $version =~ \(([0-9a-f]{12}( \+modified)?|unknown)\)$ ]]; then
+    echo "${BASH_REMATCH[1]}"
+  else
+    build_commit
   fi
 }
 

@@ -8,7 +8,9 @@
 #include <CLI/CLI.hpp>
 #include <exception>
 #include <iostream>
+#include <string>
 
+#include "apps/scout/build_commit.h"
 #include "apps/scout/command_util.h"
 #include "apps/scout/compare_command.h"
 #include "apps/scout/explore_command.h"
@@ -46,7 +48,9 @@ int main(int argc, char** argv) {
   KeepFreedMemoryForReuse();
   CLI::App app{"Scout: reachable-frontier exploration on submap graph SLAM"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", "scout 0.1.0");
+  // The commit in brackets is what scripts/results records as a run's build.
+  app.set_version_flag("--version",
+                       std::string("scout 0.1.0 (") + scout::apps::BuildCommit() + ")");
   scout::apps::FrontierBenchArgs bench_args;
   CLI::App* bench = scout::apps::AddFrontierBenchCommand(app, &bench_args);
   scout::apps::ReportArgs report_args;

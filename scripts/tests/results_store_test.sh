@@ -122,4 +122,10 @@ grep -q '^\*\*Skipped, their input is absent' <<<"$listed" || fail "an absent in
 grep -q '`replay-b`: `/no/data/b.log.gz`' <<<"$listed" || fail "the skipped run's file is not listed"
 grep -q '^scout replay c$' <<<"$listed" || fail "a run that is missing for another reason is not listed"
 grep -q '^scout replay b$' <<<"$listed" && fail "a skipped run is listed as not run"
+# A run's build is the commit the binary names (scout --version), the tree's when it names none.
+printf '#!/bin/sh\necho "scout 0.1.0 (0123456789ab +modified)"\n' >"$TMP/named"
+printf '#!/bin/sh\necho "scout 0.1.0"\n' >"$TMP/unnamed"
+chmod +x "$TMP/named" "$TMP/unnamed"
+[[ $(binary_commit "$TMP/named") == "0123456789ab +modified" ]] || fail "the binary's own commit is not used"
+[[ $(binary_commit "$TMP/unnamed") == "$(build_commit)" ]] || fail "a binary naming no commit is not given the tree's"
 echo "results store: all checks passed"
