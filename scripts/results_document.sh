@@ -92,6 +92,15 @@ copy_stored_run() {
   cp -r "$STORE/$1" "$OUT/$1"
 }
 
+# restore_unfinished NAME...: restore_run for each run, again just before the document is written.
+# A run this script did not make may have been re-run meanwhile by another scripts/results that
+# was interrupted: its directory then holds no finished run, and the document would leave out a
+# run the store has.
+restore_unfinished() {
+  local name
+  for name in "$@"; do restore_run "$name"; done
+}
+
 # builds_note NAME...: which builds made the finished runs, so a reader sees what is mixed.
 builds_note() {
   local name f
@@ -290,6 +299,7 @@ write_document() {
   # evaluation) share the document, its temporary file and the figures: one writes at a time.
   exec {lock_fd}>"$OUT/.document.lock"
   flock "$lock_fd"
+  restore_unfinished "${all[@]}"
   store_finished "${all[@]}"
   rm -rf "$FIG"
   mkdir -p "$FIG" "$(dirname "$DOC")"

@@ -50,6 +50,16 @@ restore_run replay-a
 cmp -s "$OUT/replay-a/summary.json" "$STORE/replay-a/summary.json" ||
   fail "run not restored after its lock was released"
 
+# A run whose re-run by another scripts/results was interrupted (its directory emptied, no
+# summary, the lock released) comes back before the document is written.
+rm -rf "$OUT/replay-a"
+mkdir -p "$OUT/replay-a"
+echo partial >"$OUT/replay-a/map.pgm"
+restore_unfinished replay-a replay-absent
+cmp -s "$OUT/replay-a/summary.json" "$STORE/replay-a/summary.json" ||
+  fail "an interrupted re-run's stored run did not come back"
+[[ ! -e $OUT/replay-absent ]] || fail "a run the store lacks was made up"
+
 # A finished run in OUT is never replaced by the stored one.
 echo '{"scans": 4}' >"$OUT/replay-a/summary.json"
 restore_run replay-a
