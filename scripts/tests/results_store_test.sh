@@ -100,6 +100,44 @@ for bad in 0 -1 two ''; do
     fail "--jobs '$bad' gave exit $status: $message"
 done
 
+# run_one makes a run beside the finished one it replaces and swaps them only when the new one
+# has finished: a failed (or interrupted) run leaves the previous one for the document. Checked
+# with a copy of the scripts and a stand-in scout that writes part of a run, then fails.
+mkdir -p "$TMP/repo/scripts" "$TMP/repo/out/results-quick/explore-office-scout-1"
+cp scripts/results scripts/results_document.sh "$TMP/repo/scripts/"
+previous=$TMP/repo/out/results-quick/explore-office-scout-1
+echo '{"previous": 1}' >"$previous/summary.json"
+cat >"$TMP/fake-scout" <<'FAKE'
+#!/bin/bash
+[[ $1 == --version ]] && { echo "scout 0.1.0 (0123456789ab)"; exit 0; }
+[[ $1 == report ]] && { echo "report of $2" >"$2/report.html"; exit 0; }
+[[ $1 == explore ]] || exit 0
+while [[ $# -gt 1 && $1 != --out ]]; do shift; done
+mkdir -p "$2"
+echo "part" >"$2/map.pgm"
+[[ $FAKE_FAIL == 1 ]] && exit 1
+echo '{"new": 1}' >"$2/summary.json"
+FAKE
+chmod +x "$TMP/fake-scout"
+status=0
+FAKE_FAIL=1 SCOUT=$TMP/fake-scout DATA=$TMP/no-data bash "$TMP/repo/scripts/results" --quick \
+  --fresh --sections explore --only explore-office-scout-1 >"$TMP/fail.log" 2>&1 || status=$?
+[[ $status == 1 ]] || fail "a failed run did not fail the evaluation (exit $status)"
+grep -q '"previous"' "$previous/summary.json" || fail "a failed run replaced the finished one"
+[[ -f $TMP/repo/out/results-quick/.making/explore-office-scout-1/map.pgm ]] ||
+  fail "a failed run's partial outputs are not kept aside"
+grep -q "what it wrote in out/results-quick/.making/explore-office-scout-1" "$TMP/fail.log" ||
+  fail "the failure does not say where the partial outputs are: $(cat "$TMP/fail.log")"
+# A run that finishes replaces the previous one, with its report drawn where it now is (the
+# document written afterwards by the stand-in scout is not checked).
+FAKE_FAIL=0 SCOUT=$TMP/fake-scout DATA=$TMP/no-data bash "$TMP/repo/scripts/results" --quick \
+  --fresh --sections explore --only explore-office-scout-1 >"$TMP/ok.log" 2>&1 || true
+grep -q '"new"' "$previous/summary.json" || fail "a finished run did not replace the previous one"
+[[ ! -e $TMP/repo/out/results-quick/.making/explore-office-scout-1 ]] ||
+  fail "a finished run was left in .making"
+grep -q "^report of out/results-quick/explore-office-scout-1$" "$previous/report.html" ||
+  fail "the report was not drawn again in the run's own directory"
+
 if ! git cat-file -e "$FRONTIER_EXACT_COMMIT^{commit}" 2>/dev/null ||
   ! git cat-file -e "$FRONTIER_EXACT_COMMIT~1^{commit}" 2>/dev/null; then
   echo "SKIP: no history back to $FRONTIER_EXACT_COMMIT (shallow clone); staleness not tested"
