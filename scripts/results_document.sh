@@ -1,3 +1,4 @@
+# shellcheck shell=bash disable=SC2016  # (backquotes in single quotes are Markdown)
 # Sourced by scripts/results: writes $DOC and $FIG from the runs under $OUT. Every table comes
 # from `scout results-table`, which prints the command of each run above it; runs that do not
 # exist (not run yet, or failed) are listed as such with the command that would produce them.
@@ -53,7 +54,7 @@ store_run() {
     if [[ -f $dir/$f ]]; then cp "$dir/$f" "$STORE/$name.tmp/"; fi
   done
   if [[ $name == replay-* && -d $dir/figures ]]; then cp -r "$dir/figures" "$STORE/$name.tmp/"; fi
-  rm -rf "$STORE/$name"
+  rm -rf "${STORE:?}/$name"
   mv "$STORE/$name.tmp" "$STORE/$name"
 }
 

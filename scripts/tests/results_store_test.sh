@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# shellcheck disable=SC2016  # (backquotes in single quotes are Markdown)
 # Tests the run store and staleness rules of scripts/results_document.sh: a stored run comes back
 # on a clean checkout, an existing run is never overwritten, and a run is stale exactly when its
 # build lacks a commit that changed what it measures. Needs the repository's history (exit 77 =
