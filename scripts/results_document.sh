@@ -94,9 +94,9 @@ copy_stored_run() {
 }
 
 # restore_unfinished NAME...: restore_run for each run, again just before the document is written.
-# A run this script did not make may have been re-run meanwhile by another scripts/results that
-# was interrupted: its directory then holds no finished run, and the document would leave out a
-# run the store has.
+# A run another scripts/results was making when this one started was not restored then (its lock
+# was held); if that run was interrupted, or its directory emptied by a scripts/results older than
+# run_one's .making/, the document would leave out a run the store has.
 restore_unfinished() {
   local name
   for name in "$@"; do restore_run "$name"; done
