@@ -10,6 +10,8 @@
 #include <nlohmann/json.hpp>
 #include <random>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "apps/scout/cli_test_util.h"
 #include "scout/common/atomic_file.h"
@@ -219,8 +221,8 @@ TEST_F(ExploreCli, ExploresASmallMapAndWritesEveryOutput) {
   ASSERT_EQ(r.exit_code, 0) << r.output;
   for (const char* name :
        {"map.yaml", "map.pgm", "map.png", "coverage.png", "trajectory.tum", "truth.tum",
-        "frontier.csv", "coverage.csv", "summary.json", "report.html", "figures/coverage_path.svg",
-        "figures/coverage_time.svg"}) {
+        "frontier.csv", "coverage.csv", "loop_closures.csv", "summary.json", "report.html",
+        "figures/coverage_path.svg", "figures/coverage_time.svg"}) {
     EXPECT_TRUE(fs::exists(out / name)) << name;
   }
   // The report embeds both pictures and names the directory the run is in,
@@ -233,6 +235,24 @@ TEST_F(ExploreCli, ExploresASmallMapAndWritesEveryOutput) {
   EXPECT_NE(html.find("data:image/png;base64,"), std::string::npos);
   std::ifstream in(out / "summary.json");
   const nlohmann::json s = nlohmann::json::parse(in);
+  // Every loop closure found, checked against the simulator's truth: the
+  // truth knows every node, so no row lacks its reference error.
+  {
+    std::ifstream csv(out / "loop_closures.csv");
+    std::string line;
+    std::getline(csv, line);
+    EXPECT_EQ(line.rfind("node,node_time_s,submap,outcome,", 0), 0u) << line;
+    int accepted = 0;
+    while (std::getline(csv, line)) {
+      std::vector<std::string> f;
+      std::istringstream fields(line);
+      for (std::string v; std::getline(fields, v, ',');) f.push_back(v);
+      ASSERT_EQ(f.size(), 13u) << line;
+      EXPECT_FALSE(f[11].empty()) << line;
+      accepted += f[3] == "accepted";
+    }
+    EXPECT_EQ(accepted, s["slam"]["loop_closures"].get<int>());
+  }
   EXPECT_EQ(s["world"], "rooms");
   EXPECT_EQ(s["seed"], 2);
   EXPECT_EQ(s["strategy"], "exact");

@@ -24,6 +24,7 @@
 #include "scout/io/carmen_log_writer.h"
 #include "scout/io/config.h"
 #include "scout/io/frontier_report.h"
+#include "scout/io/loop_closure_csv.h"
 #include "scout/io/map_picture.h"
 #include "scout/io/output_directory.h"
 #include "scout/io/plan_picture.h"
@@ -63,16 +64,28 @@ std::vector<io::StampedPose> ToWorld(const std::vector<slam::TimedPose>& poses,
   return out;
 }
 
-// Pairs every SLAM node with the true pose at its scan's time (both carry the
-// simulator's stamp of that scan).
-std::vector<io::PosePair> PairWithTruth(const std::vector<io::StampedPose>& estimate,
-                                        const std::vector<slam::TimedPose>& truth) {
+// The true pose of every SLAM node, by node id, found by its scan's time
+// (both carry the simulator's stamp of that scan).
+std::vector<std::optional<geometry::Rigid2d>> TruthByNode(
+    const std::vector<io::StampedPose>& estimate, const std::vector<slam::TimedPose>& truth) {
   std::map<double, geometry::Rigid2d> by_time;
   for (const slam::TimedPose& t : truth) by_time.emplace(t.time_s, t.pose);
-  std::vector<io::PosePair> pairs;
+  std::vector<std::optional<geometry::Rigid2d>> by_node;
+  by_node.reserve(estimate.size());
   for (const io::StampedPose& e : estimate) {
     const auto it = by_time.find(e.time_s);
-    if (it != by_time.end()) pairs.push_back({e.time_s, e.pose, it->second});
+    by_node.push_back(it != by_time.end() ? std::optional(it->second) : std::nullopt);
+  }
+  return by_node;
+}
+
+std::vector<io::PosePair> PairWithTruth(
+    const std::vector<io::StampedPose>& estimate,
+    const std::vector<std::optional<geometry::Rigid2d>>& truth_by_node) {
+  std::vector<io::PosePair> pairs;
+  for (size_t i = 0; i < estimate.size(); ++i) {
+    if (truth_by_node[i])
+      pairs.push_back({estimate[i].time_s, estimate[i].pose, *truth_by_node[i]});
   }
   return pairs;
 }
@@ -364,7 +377,9 @@ int RunExplore(const ExploreArgs& args) {
   const std::vector<io::StampedPose> estimate =
       ToWorld(loop.map_builder().GetTrajectory(), world_from_map);
   const std::vector<io::StampedPose> truth = ToWorld(result.truth, geometry::Rigid2d());
-  const std::vector<io::PosePair> pairs = PairWithTruth(estimate, result.truth);
+  const std::vector<std::optional<geometry::Rigid2d>> truth_by_node =
+      TruthByNode(estimate, result.truth);
+  const std::vector<io::PosePair> pairs = PairWithTruth(estimate, truth_by_node);
   const double ate_rmse_m = io::ComputeTrajectoryErrors(pairs).ate_rmse_m;
   io::GlobalSubmaps submaps;
   for (const slam::SubmapState& s : loop.map_builder().GetSubmaps()) {
@@ -378,6 +393,18 @@ int RunExplore(const ExploreArgs& args) {
   io::WriteCoveragePicture(loop.world().map, loop.CoverageMask(), truth, out.Stage("coverage.png"));
   io::WriteTumTrajectory(estimate, out.Stage("trajectory.tum"));
   io::WriteTumTrajectory(truth, out.Stage("truth.tum"));
+  {
+    std::vector<double> node_times_s;
+    std::vector<geometry::Rigid2d> node_poses;
+    for (const io::StampedPose& p : estimate) {
+      node_times_s.push_back(p.time_s);
+      node_poses.push_back(p.pose);
+    }
+    std::vector<geometry::Rigid2d> submap_poses;
+    for (const auto& submap : submaps) submap_poses.push_back(submap.first);
+    io::WriteLoopClosureCsv(loop.map_builder().GetLoopClosureLog(), node_times_s, node_poses,
+                            submap_poses, truth_by_node, out.Stage("loop_closures.csv"));
+  }
   io::WriteFrontierCsv(loop.frontier_engine(), out.Stage("frontier.csv"));
   WriteCoverageCsv(result.coverage_samples, out.Stage("coverage.csv"));
   int snapshots = 0;
@@ -417,7 +444,7 @@ int RunExplore(const ExploreArgs& args) {
             << FrontierLeftText(result) << "\n"
             << "outputs: " << (out.path() / "summary.json").string()
             << ", map.yaml, map.pgm, map.png, coverage.png, trajectory.tum, truth.tum, "
-               "frontier.csv, coverage.csv, report.html, figures/"
+               "frontier.csv, coverage.csv, loop_closures.csv, report.html, figures/"
             << (log ? ", sensor.log" : "")
             << (snapshots > 0 ? ", unreachable-goal-*.png (the map each goal the true world made "
                                 "unreachable was chosen on, and the true world around it)"

@@ -4,14 +4,18 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <random>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "apps/scout/cli_test_util.h"
 #include "scout/slam/global_test_world.h"
@@ -95,6 +99,44 @@ class ReplayCli : public ::testing::Test {
 
 fs::path* ReplayCli::dir_ = nullptr;
 
+// loop_closures.csv holds one row per match the search found, as many of
+// each outcome as the summary counts; on this lap, whose reference is the
+// truth, the closures kept agree with the final map and the reference.
+void ExpectLoopClosureLogMatches(const fs::path& csv, const nlohmann::json& slam) {
+  std::istringstream lines(ReadFile(csv));
+  std::string header;
+  std::getline(lines, header);
+  EXPECT_EQ(header.rfind("node,node_time_s,submap,outcome,", 0), 0u) << header;
+  std::map<std::string, int> outcomes;
+  int accepted = 0;
+  double reference_sum_m = 0.0, reference_max_m = 0.0;
+  for (std::string line; std::getline(lines, line);) {
+    std::vector<std::string> f;
+    std::istringstream fields(line);
+    for (std::string v; std::getline(fields, v, ',');) f.push_back(v);
+    ASSERT_EQ(f.size(), 13u) << line;
+    ++outcomes[f[3]];
+    if (f[3] != "accepted") continue;
+    EXPECT_LT(std::stod(f[9]), 0.3) << line;  // final_error_m: the outlier rounds' limit
+    const double reference_error_m = std::stod(f[11]);
+    reference_sum_m += reference_error_m;
+    reference_max_m = std::max(reference_max_m, reference_error_m);
+    ++accepted;
+  }
+  ASSERT_GT(accepted, 0);
+  // A closure's reference error also holds local SLAM's drift within its
+  // submap, between the first node and the part the node matched (submap 0,
+  // made while odometry drifted, carries the largest: 0.21 m).
+  EXPECT_LT(reference_sum_m / accepted, 0.1);
+  EXPECT_LT(reference_max_m, 0.3);
+  for (const auto& [outcome, rows] : outcomes) {
+    EXPECT_TRUE(outcome == "accepted" || outcome == "gated" || outcome == "dropped") << outcome;
+  }
+  EXPECT_EQ(outcomes["accepted"], slam["loop_closures"].get<int>());
+  EXPECT_EQ(outcomes["gated"], slam["gated_loop_closures"].get<int>());
+  EXPECT_EQ(outcomes["dropped"], slam["rejected_loop_closures"].get<int>());
+}
+
 TEST_F(ReplayCli, MapsTheLoopAccuratelyAndWritesEveryOutput) {
   const fs::path out = Dir() / "a";
   const Result r = RunScout("replay " + Log() + " --reference " + Log() + " --config " +
@@ -104,10 +146,11 @@ TEST_F(ReplayCli, MapsTheLoopAccuratelyAndWritesEveryOutput) {
   EXPECT_NE(r.output.find("corridor.log:"), std::string::npos) << r.output;
   for (const char* name :
        {"summary.json", "map.yaml", "map.pgm", "map.png", "navigation_points.csv", "trajectory.tum",
-        "reference.tum", "frontier.csv", "frontiers.png", "report.html"}) {
+        "reference.tum", "loop_closures.csv", "frontier.csv", "frontiers.png", "report.html"}) {
     EXPECT_TRUE(fs::exists(out / name)) << name;
   }
   const nlohmann::json s = nlohmann::json::parse(ReadFile(out / "summary.json"));
+  ExpectLoopClosureLogMatches(out / "loop_closures.csv", s["slam"]);
   EXPECT_EQ(s["format"], "carmen");
   EXPECT_TRUE(s["interrupted_by"].is_null());
   EXPECT_EQ(s["scans"], s["dataset_scans"]);

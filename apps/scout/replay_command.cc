@@ -7,6 +7,7 @@
 #include <iostream>
 #include <limits>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 
 #include "apps/scout/command_util.h"
@@ -22,6 +23,7 @@
 #include "scout/io/config.h"
 #include "scout/io/dataset.h"
 #include "scout/io/frontier_report.h"
+#include "scout/io/loop_closure_csv.h"
 #include "scout/io/map_picture.h"
 #include "scout/io/odometry_noise.h"
 #include "scout/io/output_directory.h"
@@ -416,6 +418,23 @@ int RunReplay(const ReplayArgs& args) {
       paired_reference.push_back({p.time_s, p.reference});
     io::WriteTumTrajectory(paired_reference, out.Stage("reference.tum"));
   }
+  {
+    // Each match of the loop-closure search and its fate, checked against the
+    // final graph and, where the reference pairs the node and the submap's
+    // first node, against the reference.
+    std::vector<double> node_times_s;
+    std::vector<geometry::Rigid2d> node_poses;
+    std::vector<std::optional<geometry::Rigid2d>> reference_by_node(nodes.size());
+    for (size_t i = 0; i < nodes.size(); ++i) {
+      node_times_s.push_back(nodes[i].time_s);
+      node_poses.push_back(nodes[i].pose);
+      if (reference && node_scans[i] >= 0) reference_by_node[i] = reference->poses[node_scans[i]];
+    }
+    std::vector<geometry::Rigid2d> submap_poses;
+    for (const auto& submap : submaps) submap_poses.push_back(submap.first);
+    io::WriteLoopClosureCsv(builder.GetLoopClosureLog(), node_times_s, node_poses, submap_poses,
+                            reference_by_node, out.Stage("loop_closures.csv"));
+  }
   io::WriteFrontierCsv(engine, out.Stage("frontier.csv"));
   io::WriteFrontierPicture(engine, picture_strategy, out.Stage("frontiers.png"));
   const std::filesystem::path summary_path = out.Stage("summary.json");
@@ -473,7 +492,8 @@ int RunReplay(const ReplayArgs& args) {
   std::cout << "\n";
   std::cout << "outputs: " << (out.path() / "summary.json").string()
             << ", map.yaml, map.pgm, map.png, navigation_points.csv, trajectory.tum, "
-            << (reference ? "reference.tum, " : "") << "frontier.csv, frontiers.png, report.html\n";
+            << (reference ? "reference.tum, " : "")
+            << "loop_closures.csv, frontier.csv, frontiers.png, report.html\n";
   if (stop_signal != 0) {
     // The replay so far is complete in itself and written; the exit code
     // still tells a script that it did not reach the end of the dataset.

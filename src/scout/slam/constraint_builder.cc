@@ -225,7 +225,8 @@ bool ConstraintBuilder::ShouldSearch(int submap_id, const geometry::Rigid2d& ini
 std::optional<Constraint> ConstraintBuilder::Search(int submap_id, int node_id,
                                                     const geometry::Rigid2d& initial_relative_pose,
                                                     const PointCloud& points, double travel_m,
-                                                    double max_innovation_m) {
+                                                    double max_innovation_m,
+                                                    std::optional<geometry::Rigid2d>* gated_match) {
   const auto it = submaps_.find(submap_id);
   if (it == submaps_.end()) {
     throw std::invalid_argument("ConstraintBuilder::Search: submap " + std::to_string(submap_id) +
@@ -243,6 +244,7 @@ std::optional<Constraint> ConstraintBuilder::Search(int submap_id, int node_id,
       (match->pose.translation() - initial_relative_pose.translation()).norm();
   if (innovation_m > max_innovation_m) {
     ++num_gated_;
+    if (gated_match != nullptr) *gated_match = match->pose;
     return std::nullopt;
   }
   if (options_.wide_ambiguity_min_innovation_m > 0.0 &&

@@ -180,12 +180,13 @@ class ConstraintBuilder {
   // 'travel_m' is the length of the trajectory between the node and the
   // submap, which sizes the search window. A match whose translation is
   // more than 'max_innovation_m' from 'initial_relative_pose' is rejected
-  // (counted by num_gated). Throws std::invalid_argument if the submap was
-  // not added.
+  // (counted by num_gated; its pose goes to 'gated_match' if given). Throws
+  // std::invalid_argument if the submap was not added.
   std::optional<Constraint> Search(
       int submap_id, int node_id, const geometry::Rigid2d& initial_relative_pose,
       const PointCloud& points, double travel_m,
-      double max_innovation_m = std::numeric_limits<double>::infinity());
+      double max_innovation_m = std::numeric_limits<double>::infinity(),
+      std::optional<geometry::Rigid2d>* gated_match = nullptr);
   // The translation window searched for a node 'travel_m' of trajectory away.
   double SearchWindow(double travel_m) const;
   // The angular window (radians) searched for a node 'travel_m' away.

@@ -98,6 +98,10 @@ std::vector<SubmapState> MapBuilder::GetSubmaps() const { return pose_graph_->Ge
 
 std::vector<Constraint> MapBuilder::GetConstraints() const { return pose_graph_->GetConstraints(); }
 
+std::vector<LoopClosureRecord> MapBuilder::GetLoopClosureLog() const {
+  return pose_graph_->GetLoopClosureLog();
+}
+
 SlamStats MapBuilder::GetStats() const {
   const PoseGraphStats graph = pose_graph_->GetStats();
   SlamStats stats;

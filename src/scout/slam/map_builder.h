@@ -85,6 +85,8 @@ class MapBuilder {
   // Returns every constraint of the pose graph (intra-submap and loop
   // closures), e.g. to check loop closures against a simulator's truth.
   std::vector<Constraint> GetConstraints() const;
+  // Every match the loop-closure search found, and what became of it.
+  std::vector<LoopClosureRecord> GetLoopClosureLog() const;
   SlamStats GetStats() const;
   const LocalTrajectoryBuilder& local_trajectory_builder() const { return local_; }
 

@@ -314,19 +314,34 @@ void PoseGraph::SearchPairs(const std::vector<std::pair<int, int>>& pairs) {
   // Each branch-and-bound search takes milliseconds and they are independent:
   // with a finished submap, every older node nearby is searched at once.
   std::vector<std::optional<Constraint>> found(chosen.size());
+  std::vector<std::optional<geometry::Rigid2d>> gated(chosen.size());
   common::ParallelFor(static_cast<int64_t>(chosen.size()), 1, [&](int64_t begin, int64_t end) {
     for (int64_t i = begin; i < end; ++i) {
       const Search& s = chosen[i];
       found[i] = constraint_builder_.Search(s.submap_id, s.node_id, s.initial_relative_pose,
-                                            *s.points, s.travel_m, s.max_innovation_m);
+                                            *s.points, s.travel_m, s.max_innovation_m, &gated[i]);
     }
   });
   std::lock_guard<std::mutex> lock(mutex_);
-  for (const std::optional<Constraint>& f : found) {
+  for (size_t i = 0; i < chosen.size(); ++i) {
     ++stats_.num_searches;
-    if (f) {
-      constraints_.push_back(*f);
-      AddLoopLink(*f);
+    if (!found[i] && !gated[i]) continue;
+    const Search& s = chosen[i];
+    const Submap& submap = submaps_[s.submap_id];
+    LoopClosureRecord record;
+    record.node_id = s.node_id;
+    record.submap_id = s.submap_id;
+    record.outcome = found[i] ? LoopClosureOutcome::kAccepted : LoopClosureOutcome::kGated;
+    record.match = found[i] ? found[i]->relative_pose : *gated[i];
+    record.estimate = s.initial_relative_pose;
+    record.gate_window_m = s.max_innovation_m;
+    record.submap_first_node_id = submap.node_ids.front();
+    record.first_node_in_submap =
+        submap.state.local_pose.inverse() * nodes_[submap.node_ids.front()].data.local_pose;
+    loop_closure_log_.push_back(record);
+    if (found[i]) {
+      constraints_.push_back(*found[i]);
+      AddLoopLink(*found[i]);
       ++stats_.num_loop_closures;
     }
   }
@@ -411,6 +426,15 @@ void PoseGraph::ApplySolve(int num_nodes, int num_submaps, const SolveOutput& ou
       submaps_[i].state.global_pose = local_to_global_ * submaps_[i].state.local_pose;
     }
     std::erase_if(constraints_, [&](const Constraint& c) { return Contains(rejected, c); });
+    for (LoopClosureRecord& r : loop_closure_log_) {
+      if (r.outcome != LoopClosureOutcome::kAccepted) continue;
+      const bool dropped = std::any_of(rejected.begin(), rejected.end(), [&](const Constraint& c) {
+        return c.node_id == r.node_id && c.submap_id == r.submap_id &&
+               c.relative_pose.translation() == r.match.translation() &&
+               c.relative_pose.theta() == r.match.theta();
+      });
+      if (dropped) r.outcome = LoopClosureOutcome::kDropped;
+    }
     if (!rejected.empty()) {
       loop_links_.clear();
       for (const Constraint& c : constraints_) {
@@ -498,6 +522,11 @@ std::vector<SubmapState> PoseGraph::GetSubmaps() const {
 std::vector<Constraint> PoseGraph::GetConstraints() const {
   std::lock_guard<std::mutex> lock(mutex_);
   return constraints_;
+}
+
+std::vector<LoopClosureRecord> PoseGraph::GetLoopClosureLog() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return loop_closure_log_;
 }
 
 geometry::Rigid2d PoseGraph::GetLocalToGlobal() const {

@@ -176,6 +176,9 @@ class PoseGraph {
   std::vector<SubmapState> GetSubmaps() const;
   // Returns every constraint found so far.
   std::vector<Constraint> GetConstraints() const;
+  // Returns every match the loop-closure search found (accepted, gated or
+  // dropped since), in the order they were found.
+  std::vector<LoopClosureRecord> GetLoopClosureLog() const;
   // Returns the transform that maps local SLAM poses into the global frame,
   // as of the latest solve.
   geometry::Rigid2d GetLocalToGlobal() const;
@@ -251,6 +254,7 @@ class PoseGraph {
   std::vector<Node> nodes_;
   std::vector<Submap> submaps_;
   std::vector<Constraint> constraints_;
+  std::vector<LoopClosureRecord> loop_closure_log_;
   // Accepted loop closures as links between submaps (by submap id): a
   // closure of node n in submap s links each insertion submap a of n with s,
   // n's travel from a's first node (plus loop_closure_chain_travel_m) apart.

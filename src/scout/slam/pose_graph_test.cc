@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <iostream>
@@ -98,7 +99,14 @@ struct Outcome {
   std::vector<std::vector<Rigid2d>> optimized;  // callback payloads, in order
   PoseGraphStats stats;
   std::vector<Constraint> constraints;
+  std::vector<LoopClosureRecord> log;
 };
+
+int CountOutcome(const Outcome& out, LoopClosureOutcome outcome) {
+  return static_cast<int>(
+      std::count_if(out.log.begin(), out.log.end(),
+                    [&](const LoopClosureRecord& r) { return r.outcome == outcome; }));
+}
 
 Outcome Feed(const PoseGraphOptions& options, const std::vector<NodeInput>& run = DriveRun()) {
   Outcome out;
@@ -112,6 +120,7 @@ Outcome Feed(const PoseGraphOptions& options, const std::vector<NodeInput>& run 
   out.nodes = graph.GetNodePoses();
   out.stats = graph.GetStats();
   out.constraints = graph.GetConstraints();
+  out.log = graph.GetLoopClosureLog();
   return out;
 }
 
@@ -224,6 +233,30 @@ TEST(PoseGraphTest, MatchesFartherFromTheEstimateThanTheChainAllowsAreGated) {
   EXPECT_GT(outlier_rounds.stats.num_rejected_loop_closures, 0);
   // ... and without either they pull the first lap off.
   EXPECT_GT(error(neither, 100), 0.05);
+
+  // The log tells which was which. Every gated match lay beyond its window.
+  // Placed by the truth of the submap's first node, the submap frame shows
+  // the slip on one side of each: the match (an old node in a submap begun
+  // before the slip and filled after it) or the estimate (a node after it).
+  EXPECT_EQ(CountOutcome(gated, LoopClosureOutcome::kGated), gated.stats.num_gated_loop_closures);
+  EXPECT_EQ(CountOutcome(gated, LoopClosureOutcome::kAccepted), gated.stats.num_loop_closures);
+  for (const LoopClosureRecord& r : gated.log) {
+    if (r.outcome != LoopClosureOutcome::kGated) continue;
+    EXPECT_GT((r.match.translation() - r.estimate.translation()).norm(), r.gate_window_m);
+    const Rigid2d submap_truth =
+        run[r.submap_first_node_id].truth * r.first_node_in_submap.inverse();
+    const Rigid2d truth = submap_truth.inverse() * run[r.node_id].truth;
+    const double match_off_m = (truth.translation() - r.match.translation()).norm();
+    const double estimate_off_m = (truth.translation() - r.estimate.translation()).norm();
+    EXPECT_LT(std::min(match_off_m, estimate_off_m), 0.05) << r.node_id << " in " << r.submap_id;
+    EXPECT_NEAR(std::max(match_off_m, estimate_off_m), 1.6, 0.1)
+        << r.node_id << " in " << r.submap_id;
+  }
+  EXPECT_EQ(CountOutcome(outlier_rounds, LoopClosureOutcome::kDropped),
+            outlier_rounds.stats.num_rejected_loop_closures);
+  EXPECT_EQ(CountOutcome(outlier_rounds, LoopClosureOutcome::kAccepted),
+            outlier_rounds.stats.num_loop_closures);
+  EXPECT_EQ(CountOutcome(outlier_rounds, LoopClosureOutcome::kGated), 0);
 }
 
 TEST(PoseGraphTest, ExactLocalSlamStaysExact) {

@@ -1,6 +1,7 @@
 #ifndef SCOUT_SLAM_POSE_GRAPH_TYPES_H_
 #define SCOUT_SLAM_POSE_GRAPH_TYPES_H_
 
+#include <limits>
 #include <optional>
 
 #include "scout/geometry/rigid_transform.h"
@@ -30,6 +31,31 @@ struct Constraint {
   double translation_weight = 1.0;
   double rotation_weight = 1.0;
   ConstraintKind kind = ConstraintKind::kIntraSubmap;
+};
+
+// What became of a match the loop-closure search found.
+enum class LoopClosureOutcome {
+  kAccepted,  // added to the graph and still there
+  kGated,     // farther from the estimate than the chain's window allows
+  kDropped,   // added, then dropped as an outlier after a solve
+};
+
+// One match of the loop-closure search, kept so that a user can see which
+// closures shaped the map and check them against a reference.
+struct LoopClosureRecord {
+  int node_id = 0;
+  int submap_id = 0;
+  LoopClosureOutcome outcome = LoopClosureOutcome::kAccepted;
+  // Node frame -> submap frame: as matched (refined when accepted), and as
+  // the graph estimated it when the pair was searched.
+  geometry::Rigid2d match;
+  geometry::Rigid2d estimate;
+  // The gate's limit on |match - estimate| (infinity: no gate).
+  double gate_window_m = std::numeric_limits<double>::infinity();
+  // The submap's first node and that node's pose in the submap frame (local
+  // SLAM's), which place the submap frame for a reference trajectory.
+  int submap_first_node_id = 0;
+  geometry::Rigid2d first_node_in_submap;
 };
 
 // What the optimisation needs to know about a node.

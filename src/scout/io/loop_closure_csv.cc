@@ -1,0 +1,82 @@
+#include "scout/io/loop_closure_csv.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "scout/common/atomic_file.h"
+
+namespace scout::io {
+namespace {
+
+// 'value' printed with 'format', or "" when it is not finite (no gate, no
+// reference).
+std::string FixedOrEmpty(double value, const char* format) {
+  if (!std::isfinite(value)) return "";
+  char text[64];
+  std::snprintf(text, sizeof(text), format, value);
+  return text;
+}
+
+}  // namespace
+
+MatchDisagreement MatchError(const geometry::Rigid2d& match, const geometry::Rigid2d& submap_pose,
+                             const geometry::Rigid2d& node_pose) {
+  const geometry::Rigid2d error = match.inverse() * (submap_pose.inverse() * node_pose);
+  return {error.translation().norm(), geometry::NormalizeAngle(error.theta()) * 180.0 / M_PI};
+}
+
+geometry::Rigid2d ReferenceSubmapPose(const slam::LoopClosureRecord& record,
+                                      const geometry::Rigid2d& reference_first_node) {
+  return reference_first_node * record.first_node_in_submap.inverse();
+}
+
+std::string OutcomeName(slam::LoopClosureOutcome outcome) {
+  switch (outcome) {
+    case slam::LoopClosureOutcome::kAccepted:
+      return "accepted";
+    case slam::LoopClosureOutcome::kGated:
+      return "gated";
+    case slam::LoopClosureOutcome::kDropped:
+      return "dropped";
+  }
+  return "unknown";
+}
+
+void WriteLoopClosureCsv(const std::vector<slam::LoopClosureRecord>& records,
+                         const std::vector<double>& node_times_s,
+                         const std::vector<geometry::Rigid2d>& node_poses,
+                         const std::vector<geometry::Rigid2d>& submap_poses,
+                         const std::vector<std::optional<geometry::Rigid2d>>& reference_poses,
+                         const std::filesystem::path& path) {
+  std::string text =
+      "node,node_time_s,submap,outcome,match_x_m,match_y_m,match_theta_rad,innovation_m,"
+      "gate_window_m,final_error_m,final_error_deg,reference_error_m,reference_error_deg\n";
+  const auto reference = [&](int node_id) -> const std::optional<geometry::Rigid2d>* {
+    if (node_id < 0 || node_id >= static_cast<int>(reference_poses.size())) return nullptr;
+    return reference_poses[node_id] ? &reference_poses[node_id] : nullptr;
+  };
+  char line[512];
+  for (const slam::LoopClosureRecord& r : records) {
+    const MatchDisagreement final_error =
+        MatchError(r.match, submap_poses.at(r.submap_id), node_poses.at(r.node_id));
+    MatchDisagreement reference_error{NAN, NAN};
+    const auto* node_reference = reference(r.node_id);
+    const auto* first_reference = reference(r.submap_first_node_id);
+    if (node_reference != nullptr && first_reference != nullptr) {
+      reference_error =
+          MatchError(r.match, ReferenceSubmapPose(r, **first_reference), **node_reference);
+    }
+    const double innovation_m = (r.match.translation() - r.estimate.translation()).norm();
+    std::snprintf(line, sizeof(line), "%d,%.6f,%d,%s,%.4f,%.4f,%.6f,%.4f,%s,%.4f,%.3f,%s,%s\n",
+                  r.node_id, node_times_s.at(r.node_id), r.submap_id,
+                  OutcomeName(r.outcome).c_str(), r.match.x(), r.match.y(), r.match.theta(),
+                  innovation_m, FixedOrEmpty(r.gate_window_m, "%.4f").c_str(),
+                  final_error.translation_m, final_error.rotation_deg,
+                  FixedOrEmpty(reference_error.translation_m, "%.4f").c_str(),
+                  FixedOrEmpty(reference_error.rotation_deg, "%.3f").c_str());
+    text += line;
+  }
+  WriteTextFileAtomically(path, text);
+}
+
+}  // namespace scout::io

@@ -1,0 +1,59 @@
+#ifndef SCOUT_IO_LOOP_CLOSURE_CSV_H_
+#define SCOUT_IO_LOOP_CLOSURE_CSV_H_
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "scout/geometry/rigid_transform.h"
+#include "scout/slam/pose_graph_types.h"
+
+namespace scout::io {
+
+// A loop closure's disagreement with some set of poses: how far the node
+// lies from where the match put it in the submap frame.
+struct MatchDisagreement {
+  double translation_m = 0.0;
+  double rotation_deg = 0.0;  // signed, (-180, 180]
+};
+
+// How far 'match' (node frame -> submap frame) is from the same relative
+// pose under 'node_pose' and 'submap_pose' (both in one frame).
+MatchDisagreement MatchError(const geometry::Rigid2d& match, const geometry::Rigid2d& submap_pose,
+                             const geometry::Rigid2d& node_pose);
+
+// The submap frame under a reference trajectory: where the reference puts
+// the submap's first node, moved back by that node's pose in the submap
+// frame (local SLAM's). With it, MatchError checks a closure against the
+// reference independently of the SLAM estimate.
+geometry::Rigid2d ReferenceSubmapPose(const slam::LoopClosureRecord& record,
+                                      const geometry::Rigid2d& reference_first_node);
+
+// "accepted", "gated" or "dropped".
+std::string OutcomeName(slam::LoopClosureOutcome outcome);
+
+// Writes one row per record (through a temporary file and rename):
+//   node, node_time_s, submap, outcome, match_x_m, match_y_m, match_theta_rad,
+//   innovation_m, gate_window_m, final_error_m, final_error_deg,
+//   reference_error_m, reference_error_deg
+// innovation_m is |match - estimate at search time|; gate_window_m is empty
+// without a gate; final_error_* compare the match with the final graph
+// ('node_poses' by node id, 'submap_poses' by submap id); reference_error_*
+// with 'reference_poses' (by node id, in any one frame), empty where the
+// reference lacks the node or the submap's first node, or is empty itself.
+// A reference error holds the match's own error and local SLAM's drift
+// within the submap, between its first node and the part the node matched:
+// a submap made in a fast turn can put a right match a few degrees off.
+// Throws InputError when the file cannot be written, std::out_of_range when
+// a record names a node or submap beyond the poses.
+void WriteLoopClosureCsv(const std::vector<slam::LoopClosureRecord>& records,
+                         const std::vector<double>& node_times_s,
+                         const std::vector<geometry::Rigid2d>& node_poses,
+                         const std::vector<geometry::Rigid2d>& submap_poses,
+                         const std::vector<std::optional<geometry::Rigid2d>>& reference_poses,
+                         const std::filesystem::path& path);
+
+}  // namespace scout::io
+
+#endif  // SCOUT_IO_LOOP_CLOSURE_CSV_H_
