@@ -427,6 +427,7 @@ void PoseGraph::ApplySolve(int num_nodes, int num_submaps, const SolveOutput& ou
     }
     std::erase_if(constraints_, [&](const Constraint& c) { return Contains(rejected, c); });
     for (LoopClosureRecord& r : loop_closure_log_) {
+      if (rejected.empty()) break;
       if (r.outcome != LoopClosureOutcome::kAccepted) continue;
       const bool dropped = std::any_of(rejected.begin(), rejected.end(), [&](const Constraint& c) {
         return c.node_id == r.node_id && c.submap_id == r.submap_id &&
