@@ -393,18 +393,8 @@ int RunExplore(const ExploreArgs& args) {
   io::WriteCoveragePicture(loop.world().map, loop.CoverageMask(), truth, out.Stage("coverage.png"));
   io::WriteTumTrajectory(estimate, out.Stage("trajectory.tum"));
   io::WriteTumTrajectory(truth, out.Stage("truth.tum"));
-  {
-    std::vector<double> node_times_s;
-    std::vector<geometry::Rigid2d> node_poses;
-    for (const io::StampedPose& p : estimate) {
-      node_times_s.push_back(p.time_s);
-      node_poses.push_back(p.pose);
-    }
-    std::vector<geometry::Rigid2d> submap_poses;
-    for (const auto& submap : submaps) submap_poses.push_back(submap.first);
-    io::WriteLoopClosureCsv(loop.map_builder().GetLoopClosureLog(), node_times_s, node_poses,
-                            submap_poses, truth_by_node, out.Stage("loop_closures.csv"));
-  }
+  io::WriteLoopClosureCsv(loop.map_builder().GetLoopClosureLog(), estimate, submaps, truth_by_node,
+                          out.Stage("loop_closures.csv"));
   io::WriteFrontierCsv(loop.frontier_engine(), out.Stage("frontier.csv"));
   WriteCoverageCsv(result.coverage_samples, out.Stage("coverage.csv"));
   int snapshots = 0;

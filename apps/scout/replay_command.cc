@@ -422,18 +422,12 @@ int RunReplay(const ReplayArgs& args) {
     // Each match of the loop-closure search and its fate, checked against the
     // final graph and, where the reference pairs the node and the submap's
     // first node, against the reference.
-    std::vector<double> node_times_s;
-    std::vector<geometry::Rigid2d> node_poses;
     std::vector<std::optional<geometry::Rigid2d>> reference_by_node(nodes.size());
-    for (size_t i = 0; i < nodes.size(); ++i) {
-      node_times_s.push_back(nodes[i].time_s);
-      node_poses.push_back(nodes[i].pose);
-      if (reference && node_scans[i] >= 0) reference_by_node[i] = reference->poses[node_scans[i]];
+    for (size_t i = 0; reference && i < nodes.size(); ++i) {
+      if (node_scans[i] >= 0) reference_by_node[i] = reference->poses[node_scans[i]];
     }
-    std::vector<geometry::Rigid2d> submap_poses;
-    for (const auto& submap : submaps) submap_poses.push_back(submap.first);
-    io::WriteLoopClosureCsv(builder.GetLoopClosureLog(), node_times_s, node_poses, submap_poses,
-                            reference_by_node, out.Stage("loop_closures.csv"));
+    io::WriteLoopClosureCsv(builder.GetLoopClosureLog(), trajectory, submaps, reference_by_node,
+                            out.Stage("loop_closures.csv"));
   }
   io::WriteFrontierCsv(engine, out.Stage("frontier.csv"));
   io::WriteFrontierPicture(engine, picture_strategy, out.Stage("frontiers.png"));

@@ -43,9 +43,7 @@ std::string OutcomeName(slam::LoopClosureOutcome outcome) {
 }
 
 void WriteLoopClosureCsv(const std::vector<slam::LoopClosureRecord>& records,
-                         const std::vector<double>& node_times_s,
-                         const std::vector<geometry::Rigid2d>& node_poses,
-                         const std::vector<geometry::Rigid2d>& submap_poses,
+                         const std::vector<StampedPose>& trajectory, const GlobalSubmaps& submaps,
                          const std::vector<std::optional<geometry::Rigid2d>>& reference_poses,
                          const std::filesystem::path& path) {
   std::string text =
@@ -57,8 +55,9 @@ void WriteLoopClosureCsv(const std::vector<slam::LoopClosureRecord>& records,
   };
   char line[512];
   for (const slam::LoopClosureRecord& r : records) {
+    const StampedPose& node = trajectory.at(r.node_id);
     const MatchDisagreement final_error =
-        MatchError(r.match, submap_poses.at(r.submap_id), node_poses.at(r.node_id));
+        MatchError(r.match, submaps.at(r.submap_id).first, node.pose);
     MatchDisagreement reference_error{NAN, NAN};
     const auto* node_reference = reference(r.node_id);
     const auto* first_reference = reference(r.submap_first_node_id);
@@ -68,10 +67,10 @@ void WriteLoopClosureCsv(const std::vector<slam::LoopClosureRecord>& records,
     }
     const double innovation_m = (r.match.translation() - r.estimate.translation()).norm();
     std::snprintf(line, sizeof(line), "%d,%.6f,%d,%s,%.4f,%.4f,%.6f,%.4f,%s,%.4f,%.3f,%s,%s\n",
-                  r.node_id, node_times_s.at(r.node_id), r.submap_id,
-                  OutcomeName(r.outcome).c_str(), r.match.x(), r.match.y(), r.match.theta(),
-                  innovation_m, FixedOrEmpty(r.gate_window_m, "%.4f").c_str(),
-                  final_error.translation_m, final_error.rotation_deg,
+                  r.node_id, node.time_s, r.submap_id, OutcomeName(r.outcome).c_str(), r.match.x(),
+                  r.match.y(), r.match.theta(), innovation_m,
+                  FixedOrEmpty(r.gate_window_m, "%.4f").c_str(), final_error.translation_m,
+                  final_error.rotation_deg,
                   FixedOrEmpty(reference_error.translation_m, "%.4f").c_str(),
                   FixedOrEmpty(reference_error.rotation_deg, "%.3f").c_str());
     text += line;

@@ -7,6 +7,8 @@
 #include <vector>
 
 #include "scout/geometry/rigid_transform.h"
+#include "scout/io/map_picture.h"
+#include "scout/io/trajectory.h"
 #include "scout/slam/pose_graph_types.h"
 
 namespace scout::io {
@@ -39,7 +41,7 @@ std::string OutcomeName(slam::LoopClosureOutcome outcome);
 //   reference_error_m, reference_error_deg
 // innovation_m is |match - estimate at search time|; gate_window_m is empty
 // without a gate; final_error_* compare the match with the final graph
-// ('node_poses' by node id, 'submap_poses' by submap id); reference_error_*
+// ('trajectory' by node id, 'submaps' by submap id, in one frame); reference_error_*
 // with 'reference_poses' (by node id, in any one frame), empty where the
 // reference lacks the node or the submap's first node, or is empty itself.
 // A reference error holds the match's own error and local SLAM's drift
@@ -48,9 +50,7 @@ std::string OutcomeName(slam::LoopClosureOutcome outcome);
 // Throws InputError when the file cannot be written, std::out_of_range when
 // a record names a node or submap beyond the poses.
 void WriteLoopClosureCsv(const std::vector<slam::LoopClosureRecord>& records,
-                         const std::vector<double>& node_times_s,
-                         const std::vector<geometry::Rigid2d>& node_poses,
-                         const std::vector<geometry::Rigid2d>& submap_poses,
+                         const std::vector<StampedPose>& trajectory, const GlobalSubmaps& submaps,
                          const std::vector<std::optional<geometry::Rigid2d>>& reference_poses,
                          const std::filesystem::path& path);
 

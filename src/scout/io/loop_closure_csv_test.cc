@@ -96,13 +96,13 @@ TEST_F(LoopClosureCsvTest, WritesEachRecordWithItsOutcomeAndErrors) {
 
   // Final graph: submap 1 at (-1, 0), node 5 where the match says, node 3
   // 0.2 m off its match.
-  const std::vector<Rigid2d> submaps = {Rigid2d(), Rigid2d(-1.0, 0.0, 0.0)};
-  std::vector<Rigid2d> nodes(6);
-  nodes[5] = Rigid2d(4.0, 1.0, M_PI / 2);
-  nodes[3] = Rigid2d(4.0, 1.2, M_PI / 2);
-  const std::vector<double> times = {0.0, 0.1, 0.2, 0.3, 0.4, 0.5};
+  const GlobalSubmaps submaps = {{Rigid2d(), nullptr}, {Rigid2d(-1.0, 0.0, 0.0), nullptr}};
+  std::vector<StampedPose> nodes(6);
+  for (int i = 0; i < 6; ++i) nodes[i].time_s = 0.1 * i;
+  nodes[5].pose = Rigid2d(4.0, 1.0, M_PI / 2);
+  nodes[3].pose = Rigid2d(4.0, 1.2, M_PI / 2);
   const auto path = dir_ / "loop_closures.csv";
-  WriteLoopClosureCsv({right, copy, unknown}, times, nodes, submaps, reference, path);
+  WriteLoopClosureCsv({right, copy, unknown}, nodes, submaps, reference, path);
 
   const std::vector<std::string> lines = Lines(path);
   ASSERT_EQ(lines.size(), 4u);
@@ -112,6 +112,7 @@ TEST_F(LoopClosureCsvTest, WritesEachRecordWithItsOutcomeAndErrors) {
   const auto a = Fields(lines[1]);
   ASSERT_EQ(a.size(), 13u);
   EXPECT_EQ(a[0], "5");
+  EXPECT_EQ(a[1], "0.500000");  // the node's stamp
   EXPECT_EQ(a[3], "accepted");
   EXPECT_NEAR(std::stod(a[7]), 0.5, 1e-9);  // innovation
   EXPECT_EQ(a[8], "2.0000");
@@ -132,7 +133,9 @@ TEST_F(LoopClosureCsvTest, WritesEachRecordWithItsOutcomeAndErrors) {
 TEST_F(LoopClosureCsvTest, RejectsARecordBeyondThePoses) {
   slam::LoopClosureRecord r;
   r.node_id = 7;
-  EXPECT_THROW(WriteLoopClosureCsv({r}, {0.0}, {Rigid2d()}, {Rigid2d()}, {}, dir_ / "x.csv"),
+  const std::vector<StampedPose> one_node(1);
+  const GlobalSubmaps one_submap = {{Rigid2d(), nullptr}};
+  EXPECT_THROW(WriteLoopClosureCsv({r}, one_node, one_submap, {}, dir_ / "x.csv"),
                std::out_of_range);
   EXPECT_FALSE(std::filesystem::exists(dir_ / "x.csv"));
 }
