@@ -85,15 +85,25 @@ std::vector<int> NodeScans(const io::Dataset& dataset, const std::vector<slam::T
   return node_scans;
 }
 
-// Pairs every SLAM node with the reference pose of its scan.
-std::vector<io::PosePair> PairNodesWithReference(const io::ScanReference& reference,
-                                                 const std::vector<slam::TimedPose>& nodes,
-                                                 const std::vector<int>& node_scans) {
+// The reference pose of every SLAM node's scan, by node id (none where the
+// scan has no reference pose).
+std::vector<std::optional<geometry::Rigid2d>> ReferenceByNode(const io::ScanReference& reference,
+                                                              const std::vector<int>& node_scans) {
+  std::vector<std::optional<geometry::Rigid2d>> by_node(node_scans.size());
+  for (size_t i = 0; i < node_scans.size(); ++i) {
+    if (node_scans[i] >= 0) by_node[i] = reference.poses[node_scans[i]];
+  }
+  return by_node;
+}
+
+// Pairs every SLAM node that has a reference pose with it.
+std::vector<io::PosePair> PairNodesWithReference(
+    const std::vector<slam::TimedPose>& nodes,
+    const std::vector<std::optional<geometry::Rigid2d>>& reference_by_node) {
   std::vector<io::PosePair> pairs;
   for (size_t i = 0; i < nodes.size(); ++i) {
-    if (node_scans[i] >= 0 && reference.poses[node_scans[i]]) {
-      pairs.push_back({nodes[i].time_s, nodes[i].pose, *reference.poses[node_scans[i]]});
-    }
+    if (reference_by_node[i])
+      pairs.push_back({nodes[i].time_s, nodes[i].pose, *reference_by_node[i]});
   }
   return pairs;
 }
@@ -353,8 +363,10 @@ int RunReplay(const ReplayArgs& args) {
       ConsistencySummary(dataset, nodes, node_scans, reference ? &*reference : nullptr,
                          config.slam.local.range_filter);
   std::vector<io::PosePair> reference_pairs;
+  std::vector<std::optional<geometry::Rigid2d>> reference_by_node(nodes.size());
   if (reference) {
-    reference_pairs = PairNodesWithReference(*reference, nodes, node_scans);
+    reference_by_node = ReferenceByNode(*reference, node_scans);
+    reference_pairs = PairNodesWithReference(nodes, reference_by_node);
     WarnIfReferenceStandsStill(reference_pairs, args.reference);
     const io::TrajectoryErrors errors = io::ComputeTrajectoryErrors(reference_pairs);
     summary["reference"] = ReferenceSummary(errors, *reference);
@@ -418,17 +430,11 @@ int RunReplay(const ReplayArgs& args) {
       paired_reference.push_back({p.time_s, p.reference});
     io::WriteTumTrajectory(paired_reference, out.Stage("reference.tum"));
   }
-  {
-    // Each match of the loop-closure search and its fate, checked against the
-    // final graph and, where the reference pairs the node and the submap's
-    // first node, against the reference.
-    std::vector<std::optional<geometry::Rigid2d>> reference_by_node(nodes.size());
-    for (size_t i = 0; reference && i < nodes.size(); ++i) {
-      if (node_scans[i] >= 0) reference_by_node[i] = reference->poses[node_scans[i]];
-    }
-    io::WriteLoopClosureCsv(builder.GetLoopClosureLog(), trajectory, submaps, reference_by_node,
-                            out.Stage("loop_closures.csv"));
-  }
+  // Each match of the loop-closure search and its fate, checked against the
+  // final graph and, where the reference has the node and the submap's first
+  // node, against the reference.
+  io::WriteLoopClosureCsv(builder.GetLoopClosureLog(), trajectory, submaps, reference_by_node,
+                          out.Stage("loop_closures.csv"));
   io::WriteFrontierCsv(engine, out.Stage("frontier.csv"));
   io::WriteFrontierPicture(engine, picture_strategy, out.Stage("frontiers.png"));
   const std::filesystem::path summary_path = out.Stage("summary.json");
