@@ -29,6 +29,7 @@
 #include "scout/io/output_directory.h"
 #include "scout/io/plan_picture.h"
 #include "scout/io/slam_summary.h"
+#include "scout/io/trajectory_association.h"
 #include "scout/io/trajectory_metrics.h"
 #include "scout/io/tum_trajectory.h"
 #include "scout/sim/lidar.h"
@@ -77,17 +78,6 @@ std::vector<std::optional<geometry::Rigid2d>> TruthByNode(
     by_node.push_back(it != by_time.end() ? std::optional(it->second) : std::nullopt);
   }
   return by_node;
-}
-
-std::vector<io::PosePair> PairWithTruth(
-    const std::vector<io::StampedPose>& estimate,
-    const std::vector<std::optional<geometry::Rigid2d>>& truth_by_node) {
-  std::vector<io::PosePair> pairs;
-  for (size_t i = 0; i < estimate.size(); ++i) {
-    if (truth_by_node[i])
-      pairs.push_back({estimate[i].time_s, estimate[i].pose, *truth_by_node[i]});
-  }
-  return pairs;
 }
 
 // map.png's overlay in the world frame the picture is drawn in: the
@@ -379,7 +369,7 @@ int RunExplore(const ExploreArgs& args) {
   const std::vector<io::StampedPose> truth = ToWorld(result.truth, geometry::Rigid2d());
   const std::vector<std::optional<geometry::Rigid2d>> truth_by_node =
       TruthByNode(estimate, result.truth);
-  const std::vector<io::PosePair> pairs = PairWithTruth(estimate, truth_by_node);
+  const std::vector<io::PosePair> pairs = io::PairByIndex(estimate, truth_by_node);
   const double ate_rmse_m = io::ComputeTrajectoryErrors(pairs).ate_rmse_m;
   io::GlobalSubmaps submaps;
   for (const slam::SubmapState& s : loop.map_builder().GetSubmaps()) {

@@ -30,6 +30,7 @@
 #include "scout/io/replay_reference.h"
 #include "scout/io/scan_consistency.h"
 #include "scout/io/slam_summary.h"
+#include "scout/io/trajectory_association.h"
 #include "scout/io/trajectory_metrics.h"
 #include "scout/io/tum_trajectory.h"
 #include "scout/slam/map_builder.h"
@@ -94,18 +95,6 @@ std::vector<std::optional<geometry::Rigid2d>> ReferenceByNode(const io::ScanRefe
     if (node_scans[i] >= 0) by_node[i] = reference.poses[node_scans[i]];
   }
   return by_node;
-}
-
-// Pairs every SLAM node that has a reference pose with it.
-std::vector<io::PosePair> PairNodesWithReference(
-    const std::vector<slam::TimedPose>& nodes,
-    const std::vector<std::optional<geometry::Rigid2d>>& reference_by_node) {
-  std::vector<io::PosePair> pairs;
-  for (size_t i = 0; i < nodes.size(); ++i) {
-    if (reference_by_node[i])
-      pairs.push_back({nodes[i].time_s, nodes[i].pose, *reference_by_node[i]});
-  }
-  return pairs;
 }
 
 // A reference that does not move (a log whose scan poses are all zero, not
@@ -366,7 +355,7 @@ int RunReplay(const ReplayArgs& args) {
   std::vector<std::optional<geometry::Rigid2d>> reference_by_node(nodes.size());
   if (reference) {
     reference_by_node = ReferenceByNode(*reference, node_scans);
-    reference_pairs = PairNodesWithReference(nodes, reference_by_node);
+    reference_pairs = io::PairByIndex(trajectory, reference_by_node);
     WarnIfReferenceStandsStill(reference_pairs, args.reference);
     const io::TrajectoryErrors errors = io::ComputeTrajectoryErrors(reference_pairs);
     summary["reference"] = ReferenceSummary(errors, *reference);

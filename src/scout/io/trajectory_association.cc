@@ -101,6 +101,15 @@ std::function<double(int)> ExpectedProgression(const std::vector<IndexPair>& anc
 
 }  // namespace
 
+std::vector<PosePair> PairByIndex(const std::vector<StampedPose>& estimate,
+                                  const std::vector<std::optional<geometry::Rigid2d>>& reference) {
+  std::vector<PosePair> pairs;
+  for (size_t i = 0; i < estimate.size() && i < reference.size(); ++i) {
+    if (reference[i]) pairs.push_back({estimate[i].time_s, estimate[i].pose, *reference[i]});
+  }
+  return pairs;
+}
+
 std::vector<PosePair> AssociateByTime(const std::vector<StampedPose>& estimate,
                                       const std::vector<StampedPose>& reference, double max_dt_s) {
   std::vector<StampedPose> sorted_reference = reference;

@@ -1,6 +1,7 @@
 #ifndef SCOUT_IO_TRAJECTORY_ASSOCIATION_H_
 #define SCOUT_IO_TRAJECTORY_ASSOCIATION_H_
 
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -15,6 +16,11 @@ namespace scout::io {
 // estimate's time and come in estimate order. Inputs need not be sorted.
 std::vector<PosePair> AssociateByTime(const std::vector<StampedPose>& estimate,
                                       const std::vector<StampedPose>& reference, double max_dt_s);
+
+// Pairs every estimate pose with the reference pose of the same index (node
+// id), where there is one; the pairs carry the estimate's time, in order.
+std::vector<PosePair> PairByIndex(const std::vector<StampedPose>& estimate,
+                                  const std::vector<std::optional<geometry::Rigid2d>>& reference);
 
 // Finds the scans two recordings of the same run share, when their time bases
 // differ (a raw ROS bag and a corrected CARMEN log of it): two scans are the

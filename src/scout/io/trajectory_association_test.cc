@@ -121,3 +121,25 @@ TEST(MatchScansByRanges, NonFiniteRangesMatchOnlyNonFinite) {
 
 }  // namespace
 }  // namespace scout::io
+
+namespace scout::io {
+namespace {
+
+TEST(PairByIndexTest, PairsOnlyTheIndicesThatHaveAReferencePose) {
+  const std::vector<StampedPose> estimate = {{1.0, geometry::Rigid2d(0.0, 0.0, 0.0)},
+                                             {2.0, geometry::Rigid2d(1.0, 0.0, 0.0)},
+                                             {3.0, geometry::Rigid2d(2.0, 0.0, 0.0)}};
+  const std::vector<std::optional<geometry::Rigid2d>> reference = {
+      geometry::Rigid2d(0.1, 0.0, 0.0), std::nullopt, geometry::Rigid2d(2.1, 0.0, 0.0)};
+  const std::vector<PosePair> pairs = PairByIndex(estimate, reference);
+  ASSERT_EQ(pairs.size(), 2u);
+  EXPECT_EQ(pairs[0].time_s, 1.0);
+  EXPECT_EQ(pairs[1].time_s, 3.0);
+  EXPECT_DOUBLE_EQ(pairs[1].estimate.x(), 2.0);
+  EXPECT_DOUBLE_EQ(pairs[1].reference.x(), 2.1);
+  // A reference shorter than the estimate pairs only what it covers.
+  EXPECT_EQ(PairByIndex(estimate, {reference[0]}).size(), 1u);
+}
+
+}  // namespace
+}  // namespace scout::io
