@@ -113,6 +113,7 @@ void ReadPoseGraph(YamlSection s, slam::PoseGraphOptions* o) {
     YamlSection c = s.Section("constraint_builder");
     slam::ConstraintBuilderOptions& b = o->constraint_builder;
     c.ReadPositive("sampling_ratio", &b.sampling_ratio);
+    c.ReadNonNegative("sampling_phase", &b.sampling_phase);
     c.ReadNonNegative("max_sample_spacing_m", &b.max_sample_spacing_m);
     c.ReadPositive("max_constraint_distance_m", &b.max_constraint_distance_m);
     c.ReadPositive("min_score", &b.min_score);

@@ -97,6 +97,11 @@ void Validate(const ConstraintBuilderOptions& options) {
         "'slam.pose_graph.constraint_builder.sampling_ratio': expected a value in (0, 1], got " +
         FormatNumber(options.sampling_ratio));
   }
+  if (!(options.sampling_phase >= 0.0 && options.sampling_phase < 1.0)) {
+    throw std::invalid_argument(
+        "'slam.pose_graph.constraint_builder.sampling_phase': expected a value in [0, 1), got " +
+        FormatNumber(options.sampling_phase));
+  }
   RequirePositiveConstraintOption("max_constraint_distance_m", options.max_constraint_distance_m);
   RequireFraction("min_score", options.min_score);
   RequireFraction("min_score_fraction_of_own_scans", options.min_score_fraction_of_own_scans);
@@ -128,7 +133,7 @@ void Validate(const ConstraintBuilderOptions& options) {
 
 bool FixedRatioSampler::Pulse() {
   ++num_pulses_;
-  if (static_cast<double>(num_samples_) < ratio_ * static_cast<double>(num_pulses_)) {
+  if (static_cast<double>(num_samples_) < ratio_ * static_cast<double>(num_pulses_) - phase_) {
     ++num_samples_;
     return true;
   }
@@ -167,9 +172,10 @@ void ConstraintBuilder::AddFinishedSubmap(int submap_id,
   }
   // The matcher shares the grid (its finest level) rather than copying it.
   auto matcher = std::make_unique<FastCorrelativeScanMatcher>(grid, matcher_options);
-  submaps_.emplace(submap_id, SubmapMatcher{std::move(grid), std::move(matcher),
-                                            FixedRatioSampler(options_.sampling_ratio),
-                                            std::nullopt, min_score});
+  submaps_.emplace(
+      submap_id, SubmapMatcher{std::move(grid), std::move(matcher),
+                               FixedRatioSampler(options_.sampling_ratio, options_.sampling_phase),
+                               std::nullopt, min_score});
 }
 
 double ConstraintBuilder::MinScore(int submap_id) const {

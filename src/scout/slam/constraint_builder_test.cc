@@ -341,6 +341,38 @@ TEST(ConstraintBuilderTest, FixedRatioSamplerIsDeterministic) {
   for (int i = 0; i < 10; ++i) EXPECT_TRUE(all.Pulse());
 }
 
+TEST(ConstraintBuilderTest, SamplingPhaseShiftsThePicksButKeepsTheRatio) {
+  const auto picks = [](double phase) {
+    FixedRatioSampler sampler(0.1, phase);
+    std::vector<int> at;
+    for (int i = 1; i <= 1000; ++i) {
+      if (sampler.Pulse()) at.push_back(i);
+    }
+    return at;
+  };
+  const std::vector<int> none = picks(0.0), half = picks(0.5), most = picks(0.95);
+  // Phase 0 is Cartographer's sampler: the first call says yes, then every
+  // tenth.
+  ASSERT_EQ(none.size(), 100u);
+  EXPECT_EQ(none[0], 1);
+  EXPECT_EQ(none[1], 11);
+  // A phase delays the first yes by phase / ratio calls, and every later one
+  // alike; over many calls the fraction stays the ratio.
+  ASSERT_GE(half.size(), 99u);
+  EXPECT_EQ(half[0], 6);
+  EXPECT_EQ(half[1], 16);
+  EXPECT_EQ(most[0], 10);
+  EXPECT_NEAR(static_cast<double>(most.size()), 100.0, 1.0);
+  FixedRatioSampler all(1.0, 0.9);
+  for (int i = 0; i < 10; ++i) EXPECT_TRUE(all.Pulse());
+
+  ConstraintBuilderOptions options;
+  options.sampling_phase = 1.0;
+  EXPECT_THROW(ConstraintBuilder{options}, std::invalid_argument);
+  options.sampling_phase = -0.1;
+  EXPECT_THROW(ConstraintBuilder{options}, std::invalid_argument);
+}
+
 TEST(ConstraintBuilderTest, RejectsBadOptionsAndUnknownSubmaps) {
   ConstraintBuilderOptions options;
   options.sampling_ratio = 0.0;
