@@ -62,6 +62,8 @@ TEST_F(ConfigTest, SlamSectionOfTheDefaultFileMatchesTheBuiltInDefaults) {
                    d.pose_graph.intra_submap_translation_weight);
   EXPECT_DOUBLE_EQ(c.pose_graph.constraint_builder.sampling_ratio,
                    d.pose_graph.constraint_builder.sampling_ratio);
+  EXPECT_DOUBLE_EQ(c.pose_graph.constraint_builder.sampling_phase,
+                   d.pose_graph.constraint_builder.sampling_phase);
   EXPECT_DOUBLE_EQ(c.pose_graph.constraint_builder.min_score,
                    d.pose_graph.constraint_builder.min_score);
   EXPECT_DOUBLE_EQ(c.local.ceres_scan_matcher.unknown_probability,
@@ -115,6 +117,11 @@ TEST_F(ConfigTest, SlamValuesOverrideDefaultsAndErrorsNameTheKey) {
   EXPECT_FALSE(
       LoadConfig(Write("slam:\n  local:\n    use_odometry: false\n")).slam.local.use_odometry);
   EXPECT_NEAR(c.slam.local.motion_filter.max_angle_rad, 2.0 * M_PI / 180.0, 1e-12);
+  EXPECT_DOUBLE_EQ(
+      LoadConfig(
+          Write("slam:\n  pose_graph:\n    constraint_builder:\n      sampling_phase: 0.4\n"))
+          .slam.pose_graph.constraint_builder.sampling_phase,
+      0.4);
   std::string e = ErrorOf("slam:\n  pose_graph:\n    constraint_builder:\n      min_scor: 0.6\n");
   EXPECT_NE(e.find("slam.pose_graph.constraint_builder.min_scor"), std::string::npos) << e;
   // Out-of-range values caught by the module's own validation still name the file.
@@ -180,6 +187,8 @@ TEST_F(ConfigTest, ExtremeValuesAreErrorsNamingTheKeyNotRunawayRuns) {
        "'slam.pose_graph.optimization_problem.num_threads': expected 1 to 64"},
       {"slam:\n  pose_graph:\n    constraint_builder:\n      sampling_ratio: 2\n",
        "'slam.pose_graph.constraint_builder.sampling_ratio': expected a value in (0, 1], got 2"},
+      {"slam:\n  pose_graph:\n    constraint_builder:\n      sampling_phase: 1\n",
+       "'slam.pose_graph.constraint_builder.sampling_phase': expected a value in [0, 1), got 1"},
       {"slam:\n  local:\n    range_filter:\n      min_range_m: 1e300\n",
        "range_filter.min_range_m must be in [0, 200] (m), got 1e+300"}};
   for (const auto& [yaml, expected] : cases) {
