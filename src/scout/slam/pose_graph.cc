@@ -425,18 +425,18 @@ void PoseGraph::ApplySolve(int num_nodes, int num_submaps, const SolveOutput& ou
     for (size_t i = num_submaps; i < submaps_.size(); ++i) {
       submaps_[i].state.global_pose = local_to_global_ * submaps_[i].state.local_pose;
     }
-    std::erase_if(constraints_, [&](const Constraint& c) { return Contains(rejected, c); });
-    for (LoopClosureRecord& r : loop_closure_log_) {
-      if (rejected.empty()) break;
-      if (r.outcome != LoopClosureOutcome::kAccepted) continue;
-      const bool dropped = std::any_of(rejected.begin(), rejected.end(), [&](const Constraint& c) {
-        return c.node_id == r.node_id && c.submap_id == r.submap_id &&
-               c.relative_pose.translation() == r.match.translation() &&
-               c.relative_pose.theta() == r.match.theta();
-      });
-      if (dropped) r.outcome = LoopClosureOutcome::kDropped;
-    }
     if (!rejected.empty()) {
+      std::erase_if(constraints_, [&](const Constraint& c) { return Contains(rejected, c); });
+      for (LoopClosureRecord& r : loop_closure_log_) {
+        if (r.outcome != LoopClosureOutcome::kAccepted) continue;
+        const bool dropped =
+            std::any_of(rejected.begin(), rejected.end(), [&](const Constraint& c) {
+              return c.node_id == r.node_id && c.submap_id == r.submap_id &&
+                     c.relative_pose.translation() == r.match.translation() &&
+                     c.relative_pose.theta() == r.match.theta();
+            });
+        if (dropped) r.outcome = LoopClosureOutcome::kDropped;
+      }
       loop_links_.clear();
       for (const Constraint& c : constraints_) {
         if (c.kind == ConstraintKind::kInterSubmap) AddLoopLink(c);
