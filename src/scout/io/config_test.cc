@@ -52,6 +52,10 @@ TEST_F(ConfigTest, SlamSectionOfTheDefaultFileMatchesTheBuiltInDefaults) {
                    d.local.ceres_scan_matcher.translation_weight);
   EXPECT_DOUBLE_EQ(c.local.ceres_scan_matcher.rotation_weight,
                    d.local.ceres_scan_matcher.rotation_weight);
+  EXPECT_DOUBLE_EQ(c.local.ceres_scan_matcher.prediction_translation_weight,
+                   d.local.ceres_scan_matcher.prediction_translation_weight);
+  EXPECT_DOUBLE_EQ(c.local.ceres_scan_matcher.prediction_max_constrained_fraction,
+                   d.local.ceres_scan_matcher.prediction_max_constrained_fraction);
   EXPECT_NEAR(c.local.motion_filter.max_angle_rad, d.local.motion_filter.max_angle_rad, 1e-12);
   EXPECT_DOUBLE_EQ(c.local.motion_filter.max_distance_m, d.local.motion_filter.max_distance_m);
   EXPECT_EQ(c.local.submaps.num_range_data, d.local.submaps.num_range_data);
@@ -156,6 +160,26 @@ TEST_F(ConfigTest, SlamValuesOverrideDefaultsAndErrorsNameTheKey) {
                    "probability"),
             std::string::npos)
       << e;
+  // The prior toward the motion prediction: local SLAM's matcher only, the
+  // one given a prediction.
+  const ScoutConfig prior = LoadConfig(
+      Write("slam:\n  local:\n    ceres_scan_matcher:\n      prediction_translation_weight: 5\n"
+            "      prediction_max_constrained_fraction: 0.05\n"));
+  EXPECT_DOUBLE_EQ(prior.slam.local.ceres_scan_matcher.prediction_translation_weight, 5.0);
+  EXPECT_DOUBLE_EQ(prior.slam.local.ceres_scan_matcher.prediction_max_constrained_fraction, 0.05);
+  e = ErrorOf(
+      "slam:\n  pose_graph:\n    constraint_builder:\n      ceres_scan_matcher:\n"
+      "        prediction_translation_weight: 5\n");
+  EXPECT_NE(e.find("slam.pose_graph.constraint_builder.ceres_scan_matcher.prediction_translation_"
+                   "weight"),
+            std::string::npos)
+      << e;
+  e = ErrorOf(
+      "slam:\n  local:\n    ceres_scan_matcher:\n      prediction_max_constrained_fraction: 2\n");
+  EXPECT_NE(e.find("slam.local.ceres_scan_matcher.prediction_max_constrained_fraction"),
+            std::string::npos)
+      << e;
+  EXPECT_NE(e.find("in [0, 1]"), std::string::npos) << e;
   e = ErrorOf("slam:\n  local:\n    ceres_scan_matcher:\n      likelihood_field_sigma_m: -1\n");
   EXPECT_NE(e.find("slam.local.ceres_scan_matcher.likelihood_field_sigma_m"), std::string::npos)
       << e;

@@ -41,10 +41,17 @@ void ReadLikelihoodField(YamlSection& s, slam::LikelihoodFieldOptions* o) {
   ReadGridProbability(s, "likelihood_field_occupied_probability", &o->occupied_probability);
 }
 
-void ReadCeresScanMatcher(YamlSection s, slam::CeresScanMatcherOptions* o) {
+// 'local': local SLAM's matcher, the only one given a motion prediction, so
+// the only one whose section takes the prediction prior's keys.
+void ReadCeresScanMatcher(YamlSection s, slam::CeresScanMatcherOptions* o, bool local) {
   s.ReadPositive("occupied_space_weight", &o->occupied_space_weight);
   s.ReadNonNegative("translation_weight", &o->translation_weight);
   s.ReadNonNegative("rotation_weight", &o->rotation_weight);
+  if (local) {
+    s.ReadNonNegative("prediction_translation_weight", &o->prediction_translation_weight);
+    s.ReadNonNegative("prediction_max_constrained_fraction",
+                      &o->prediction_max_constrained_fraction);
+  }
   s.ReadInt("max_num_iterations", &o->max_num_iterations, 1);
   s.ReadInt("full_weight_num_points", &o->full_weight_num_points, 0);
   ReadGridProbability(s, "unknown_probability", &o->unknown_probability);
@@ -75,7 +82,7 @@ void ReadLocal(YamlSection s, slam::LocalSlamOptions* o) {
     ReadLikelihoodField(c, &m.likelihood_field);
     c.RejectUnknownKeys();
   }
-  ReadCeresScanMatcher(s.Section("ceres_scan_matcher"), &o->ceres_scan_matcher);
+  ReadCeresScanMatcher(s.Section("ceres_scan_matcher"), &o->ceres_scan_matcher, /*local=*/true);
   {
     YamlSection m = s.Section("motion_filter");
     m.ReadPositive("max_time_s", &o->motion_filter.max_time_s);
@@ -144,7 +151,7 @@ void ReadPoseGraph(YamlSection s, slam::PoseGraphOptions* o) {
                         &b.fast_correlative_scan_matcher.ambiguity_score_margin);
       f.RejectUnknownKeys();
     }
-    ReadCeresScanMatcher(c.Section("ceres_scan_matcher"), &b.ceres_scan_matcher);
+    ReadCeresScanMatcher(c.Section("ceres_scan_matcher"), &b.ceres_scan_matcher, /*local=*/false);
     c.RejectUnknownKeys();
   }
   {

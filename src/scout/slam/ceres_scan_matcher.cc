@@ -2,6 +2,7 @@
 
 #include <ceres/ceres.h>
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -25,6 +26,19 @@ struct TranslationDeltaCost {
   }
   double weight;
   Eigen::Vector2d target;
+};
+
+// The translation's offset from 'target' along a unit 'direction'.
+struct DirectionalDeltaCost {
+  template <typename T>
+  bool operator()(const T* const pose, T* residuals) const {
+    residuals[0] =
+        weight * ((pose[0] - target.x()) * direction.x() + (pose[1] - target.y()) * direction.y());
+    return true;
+  }
+  double weight;
+  Eigen::Vector2d target;
+  Eigen::Vector2d direction;
 };
 
 struct RotationDeltaCost {
@@ -53,6 +67,16 @@ void Validate(const CeresScanMatcherOptions& options) {
                    options.translation_weight, ">= 0");
   CheckCeresOption(options.rotation_weight >= 0.0, "rotation_weight", options.rotation_weight,
                    ">= 0");
+  CheckCeresOption(options.prediction_max_constrained_fraction >= 0.0 &&
+                       options.prediction_max_constrained_fraction <= 1.0,
+                   "prediction_max_constrained_fraction",
+                   options.prediction_max_constrained_fraction, "in [0, 1]");
+  CheckCeresOption(
+      options.prediction_max_constrained_fraction == 0.0 || options.likelihood_field.sigma_m > 0.0,
+      "prediction_max_constrained_fraction", options.prediction_max_constrained_fraction,
+      "0 without a likelihood field (likelihood_field_sigma_m 0)");
+  CheckCeresOption(options.prediction_translation_weight >= 0.0, "prediction_translation_weight",
+                   options.prediction_translation_weight, ">= 0");
   CheckCeresOption(options.unknown_probability >= grid::kMinProbability - 1e-6 &&
                        options.unknown_probability <= grid::kMaxProbability + 1e-6,
                    "unknown_probability", options.unknown_probability, "in [0.1, 0.9]");
@@ -67,10 +91,57 @@ CeresScanMatcher::CeresScanMatcher(const CeresScanMatcherOptions& options) : opt
   Validate(options);
 }
 
+bool CeresScanMatcher::AddDegeneratePriors(ceres::Problem* problem,
+                                           ceres::ResidualBlockId scan_block, double* pose,
+                                           double full_cost_scale,
+                                           const Eigen::Vector2d& predicted_translation) const {
+  const double h = options_.likelihood_field.sigma_m;
+  ceres::Problem::EvaluateOptions evaluate;
+  evaluate.residual_blocks = {scan_block};
+  const double x = pose[0];
+  const double y = pose[1];
+  const auto cost_at = [&](double dx, double dy) {
+    pose[0] = x + dx;
+    pose[1] = y + dy;
+    double cost = 0.0;
+    problem->Evaluate(evaluate, &cost, nullptr, nullptr, nullptr);
+    return cost;
+  };
+  // Second differences of the scan's cost along x, y and the diagonals.
+  const double c0 = cost_at(0.0, 0.0);
+  const double d = h / std::sqrt(2.0);
+  const double dxx = cost_at(h, 0.0) + cost_at(-h, 0.0) - 2.0 * c0;
+  const double dyy = cost_at(0.0, h) + cost_at(0.0, -h) - 2.0 * c0;
+  const double d1 = cost_at(d, d) + cost_at(-d, -d) - 2.0 * c0;
+  const double d2 = cost_at(d, -d) + cost_at(-d, d) - 2.0 * c0;
+  pose[0] = x;
+  pose[1] = y;
+  Eigen::Matrix2d second_differences;
+  second_differences << dxx, 0.5 * (d1 - d2), 0.5 * (d1 - d2), dyy;
+  // A point on a wall across the shift, moved by sigma either way: its
+  // residual goes from 0 to scale * (1 - exp(-1/2)), twice, in a cost of half
+  // the squared residuals.
+  const double one_minus_f = 1.0 - std::exp(-0.5);
+  const double full = full_cost_scale * one_minus_f * one_minus_f;
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eigen(second_differences);
+  bool added = false;
+  for (int i = 0; i < 2; ++i) {
+    if (eigen.eigenvalues()(i) >= options_.prediction_max_constrained_fraction * full) continue;
+    problem->AddResidualBlock(
+        new ceres::AutoDiffCostFunction<DirectionalDeltaCost, 1, 3>(
+            new DirectionalDeltaCost{options_.prediction_translation_weight, predicted_translation,
+                                     eigen.eigenvectors().col(i)}),
+        nullptr, pose);
+    added = true;
+  }
+  return added;
+}
+
 geometry::Rigid2d CeresScanMatcher::Match(const Eigen::Vector2d& target_translation,
                                           const geometry::Rigid2d& initial_pose_estimate,
                                           const PointCloud& points,
-                                          const grid::ProbabilityGrid& grid) const {
+                                          const grid::ProbabilityGrid& grid,
+                                          const Eigen::Vector2d* predicted_translation) const {
   if (points.empty()) return initial_pose_estimate;
   double pose[3] = {initial_pose_estimate.x(), initial_pose_estimate.y(),
                     initial_pose_estimate.theta()};
@@ -79,20 +150,30 @@ geometry::Rigid2d CeresScanMatcher::Match(const Eigen::Vector2d& target_translat
       std::max(points.size(), static_cast<size_t>(options_.full_weight_num_points));
   const double scale = options_.occupied_space_weight / std::sqrt(num_points_for_weight);
   std::optional<LikelihoodField> field;
+  ceres::ResidualBlockId scan_block = nullptr;
   if (options_.likelihood_field.sigma_m > 0.0) {
     // The field around the scan as first placed: beyond 3 sigma of the walls
     // it is flat, and the solve moves a scan far less than 0.5 m.
     field.emplace(grid, initial_pose_estimate, points,
                   0.5 + 3.0 * options_.likelihood_field.sigma_m, options_.likelihood_field);
-    problem.AddResidualBlock(new LikelihoodFieldCost(scale, points, *field), nullptr, pose);
+    scan_block =
+        problem.AddResidualBlock(new LikelihoodFieldCost(scale, points, *field), nullptr, pose);
   } else {
-    problem.AddResidualBlock(
+    scan_block = problem.AddResidualBlock(
         new OccupiedSpaceCost(scale, points, grid, options_.unknown_probability), nullptr, pose);
   }
   if (options_.translation_weight > 0.0) {
     problem.AddResidualBlock(
         new ceres::AutoDiffCostFunction<TranslationDeltaCost, 2, 3>(
             new TranslationDeltaCost{options_.translation_weight, target_translation}),
+        nullptr, pose);
+  }
+  const bool directional = options_.prediction_max_constrained_fraction > 0.0;
+  if (options_.prediction_translation_weight > 0.0 && predicted_translation != nullptr &&
+      !directional) {
+    problem.AddResidualBlock(
+        new ceres::AutoDiffCostFunction<TranslationDeltaCost, 2, 3>(new TranslationDeltaCost{
+            options_.prediction_translation_weight, *predicted_translation}),
         nullptr, pose);
   }
   if (options_.rotation_weight > 0.0) {
@@ -108,6 +189,13 @@ geometry::Rigid2d CeresScanMatcher::Match(const Eigen::Vector2d& target_translat
   solver_options.minimizer_progress_to_stdout = false;
   ceres::Solver::Summary summary;
   ceres::Solve(solver_options, &problem, &summary);
+  if (directional && options_.prediction_translation_weight > 0.0 &&
+      predicted_translation != nullptr) {
+    if (AddDegeneratePriors(&problem, scan_block, pose, points.size() * scale * scale,
+                            *predicted_translation)) {
+      ceres::Solve(solver_options, &problem, &summary);
+    }
+  }
   return geometry::Rigid2d(pose[0], pose[1], pose[2]);
 }
 

@@ -1,6 +1,8 @@
 #ifndef SCOUT_SLAM_CERES_SCAN_MATCHER_H_
 #define SCOUT_SLAM_CERES_SCAN_MATCHER_H_
 
+#include <ceres/problem.h>
+
 #include <Eigen/Core>
 
 #include "scout/geometry/rigid_transform.h"
@@ -23,6 +25,20 @@ struct CeresScanMatcherOptions {
   double translation_weight = 10.0;
   // Scale of the residual pulling the rotation toward the initial estimate's (per radian).
   double rotation_weight = 40.0;
+  // Scale of a second translation residual, toward the motion prediction
+  // (per metre), for callers whose initial estimate is a correlative search's
+  // result rather than the prediction. The scan's own pull on a pose across a
+  // wall is about 1/sigma^2 (280 per m^2 at 6 cm) in the likelihood field, so a
+  // weight of a few (its square against that) leaves well-constrained
+  // directions to the scan and decides only those the scan cannot, such as
+  // along a corridor, where the search's pick is arbitrary. 0 = none.
+  double prediction_translation_weight = 0.0;
+  // > 0 (with the likelihood field): that prior acts only along the
+  // directions in which less than this fraction of the scan's points
+  // constrain the matched pose, measured after a first solve by how much the
+  // scan's cost rises when the pose is shifted by sigma each way (a fully
+  // covered wall across the shift counts 1). 0 = in every direction.
+  double prediction_max_constrained_fraction = 0.0;
   // Solver iterations; scan matching runs once per scan, so this bounds its cost.
   int max_num_iterations = 20;
   // Probability that unknown cells (and the grid's outside) score. Cartographer
@@ -58,13 +74,23 @@ class CeresScanMatcher {
 
   // Refines 'initial_pose_estimate' (grid frame) so 'points' (scan frame) fall
   // on occupied cells; priors pull the translation toward
-  // 'target_translation' and the rotation toward the initial estimate's.
-  // Returns the initial estimate unchanged if 'points' is empty.
+  // 'target_translation' and the rotation toward the initial estimate's, and
+  // (prediction_translation_weight > 0) the translation also toward
+  // 'predicted_translation'. Returns the initial estimate unchanged if
+  // 'points' is empty.
   geometry::Rigid2d Match(const Eigen::Vector2d& target_translation,
                           const geometry::Rigid2d& initial_pose_estimate, const PointCloud& points,
-                          const grid::ProbabilityGrid& grid) const;
+                          const grid::ProbabilityGrid& grid,
+                          const Eigen::Vector2d* predicted_translation = nullptr) const;
 
  private:
+  // Adds the prediction prior along the directions the scan constrains less
+  // than prediction_max_constrained_fraction (see there), 'pose' being the
+  // first solve's; true if it added any.
+  bool AddDegeneratePriors(ceres::Problem* problem, ceres::ResidualBlockId scan_block, double* pose,
+                           double full_cost_scale,
+                           const Eigen::Vector2d& predicted_translation) const;
+
   CeresScanMatcherOptions options_;
 };
 

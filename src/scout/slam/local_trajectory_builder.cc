@@ -68,8 +68,9 @@ geometry::Rigid2d LocalTrajectoryBuilder::MatchScan(const geometry::Rigid2d& pre
   // against an occupied-space weight of 1) that holds the pose near the
   // prediction, and without odometry the constant-velocity model then decays
   // toward standstill (measured on the test lap: 0.75 m error instead of 2 cm).
+  const Eigen::Vector2d predicted_translation = prediction_in_submap.translation();
   const geometry::Rigid2d matched =
-      ceres_matcher_.Match(initial.translation(), initial, points, grid);
+      ceres_matcher_.Match(initial.translation(), initial, points, grid, &predicted_translation);
   return to_submap.inverse() * matched;
 }
 
