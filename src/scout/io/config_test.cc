@@ -167,19 +167,16 @@ TEST_F(ConfigTest, SlamValuesOverrideDefaultsAndErrorsNameTheKey) {
             "      prediction_max_constrained_fraction: 0.05\n"));
   EXPECT_DOUBLE_EQ(prior.slam.local.ceres_scan_matcher.prediction_translation_weight, 5.0);
   EXPECT_DOUBLE_EQ(prior.slam.local.ceres_scan_matcher.prediction_max_constrained_fraction, 0.05);
-  e = ErrorOf(
-      "slam:\n  pose_graph:\n    constraint_builder:\n      ceres_scan_matcher:\n"
-      "        prediction_translation_weight: 5\n");
-  EXPECT_NE(e.find("slam.pose_graph.constraint_builder.ceres_scan_matcher.prediction_translation_"
-                   "weight"),
-            std::string::npos)
-      << e;
-  e = ErrorOf(
-      "slam:\n  local:\n    ceres_scan_matcher:\n      prediction_max_constrained_fraction: 2\n");
-  EXPECT_NE(e.find("slam.local.ceres_scan_matcher.prediction_max_constrained_fraction"),
-            std::string::npos)
-      << e;
-  EXPECT_NE(e.find("in [0, 1]"), std::string::npos) << e;
+  for (const auto& [yaml, expected] :
+       {std::pair<const char*, const char*>{
+            "slam:\n  pose_graph:\n    constraint_builder:\n      ceres_scan_matcher:\n"
+            "        prediction_translation_weight: 5\n",
+            "slam.pose_graph.constraint_builder.ceres_scan_matcher.prediction_translation_weight"},
+        {"slam:\n  local:\n    ceres_scan_matcher:\n      prediction_max_constrained_fraction: 2\n",
+         "slam.local.ceres_scan_matcher.prediction_max_constrained_fraction must be in [0, 1]"}}) {
+    e = ErrorOf(yaml);
+    EXPECT_NE(e.find(expected), std::string::npos) << e;
+  }
   e = ErrorOf("slam:\n  local:\n    ceres_scan_matcher:\n      likelihood_field_sigma_m: -1\n");
   EXPECT_NE(e.find("slam.local.ceres_scan_matcher.likelihood_field_sigma_m"), std::string::npos)
       << e;
