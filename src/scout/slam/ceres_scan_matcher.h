@@ -31,7 +31,9 @@ struct CeresScanMatcherOptions {
   // wall is about 1/sigma^2 (280 per m^2 at 6 cm) in the likelihood field, so a
   // weight of a few (its square against that) leaves well-constrained
   // directions to the scan and decides only those the scan cannot, such as
-  // along a corridor, where the search's pick is arbitrary. 0 = none.
+  // along a corridor, where the search's pick is arbitrary. Local SLAM passes
+  // a prediction only after its correlative search (the explorer, which runs
+  // none, is not touched by it). 0 = none.
   double prediction_translation_weight = 0.0;
   // > 0 (with the likelihood field): that prior acts only along the
   // directions in which less than this fraction of the scan's points
