@@ -3,6 +3,7 @@
 #include <ceres/ceres.h>
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -16,6 +17,11 @@
 
 namespace scout::slam {
 namespace {
+
+// Neighbours within this distance decide whether a point lies on a wall, and
+// its normal (WallNormalInformation): a few of a sparse scan's returns 5 m
+// away, 1 degree apart.
+constexpr double kWallNeighbourRadiusM = 0.3;
 
 struct TranslationDeltaCost {
   template <typename T>
@@ -71,10 +77,6 @@ void Validate(const CeresScanMatcherOptions& options) {
                        options.prediction_max_constrained_fraction <= 1.0,
                    "prediction_max_constrained_fraction",
                    options.prediction_max_constrained_fraction, "in [0, 1]");
-  CheckCeresOption(
-      options.prediction_max_constrained_fraction == 0.0 || options.likelihood_field.sigma_m > 0.0,
-      "prediction_max_constrained_fraction", options.prediction_max_constrained_fraction,
-      "0 without a likelihood field (likelihood_field_sigma_m 0)");
   CheckCeresOption(options.prediction_translation_weight >= 0.0, "prediction_translation_weight",
                    options.prediction_translation_weight, ">= 0");
   CheckCeresOption(options.unknown_probability >= grid::kMinProbability - 1e-6 &&
@@ -91,52 +93,6 @@ CeresScanMatcher::CeresScanMatcher(const CeresScanMatcherOptions& options) : opt
   Validate(options);
 }
 
-bool CeresScanMatcher::AddDegeneratePriors(ceres::Problem* problem,
-                                           ceres::ResidualBlockId scan_block, double* pose,
-                                           double full_cost_scale,
-                                           const Eigen::Vector2d& predicted_translation) const {
-  const double h = options_.likelihood_field.sigma_m;
-  ceres::Problem::EvaluateOptions evaluate;
-  evaluate.residual_blocks = {scan_block};
-  const double x = pose[0];
-  const double y = pose[1];
-  const auto cost_at = [&](double dx, double dy) {
-    pose[0] = x + dx;
-    pose[1] = y + dy;
-    double cost = 0.0;
-    problem->Evaluate(evaluate, &cost, nullptr, nullptr, nullptr);
-    return cost;
-  };
-  // Second differences of the scan's cost along x, y and the diagonals.
-  const double c0 = cost_at(0.0, 0.0);
-  const double d = h / std::sqrt(2.0);
-  const double dxx = cost_at(h, 0.0) + cost_at(-h, 0.0) - 2.0 * c0;
-  const double dyy = cost_at(0.0, h) + cost_at(0.0, -h) - 2.0 * c0;
-  const double d1 = cost_at(d, d) + cost_at(-d, -d) - 2.0 * c0;
-  const double d2 = cost_at(d, -d) + cost_at(-d, d) - 2.0 * c0;
-  pose[0] = x;
-  pose[1] = y;
-  Eigen::Matrix2d second_differences;
-  second_differences << dxx, 0.5 * (d1 - d2), 0.5 * (d1 - d2), dyy;
-  // A point on a wall across the shift, moved by sigma either way: its
-  // residual goes from 0 to scale * (1 - exp(-1/2)), twice, in a cost of half
-  // the squared residuals.
-  const double one_minus_f = 1.0 - std::exp(-0.5);
-  const double full = full_cost_scale * one_minus_f * one_minus_f;
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eigen(second_differences);
-  bool added = false;
-  for (int i = 0; i < 2; ++i) {
-    if (eigen.eigenvalues()(i) >= options_.prediction_max_constrained_fraction * full) continue;
-    problem->AddResidualBlock(
-        new ceres::AutoDiffCostFunction<DirectionalDeltaCost, 1, 3>(
-            new DirectionalDeltaCost{options_.prediction_translation_weight, predicted_translation,
-                                     eigen.eigenvectors().col(i)}),
-        nullptr, pose);
-    added = true;
-  }
-  return added;
-}
-
 geometry::Rigid2d CeresScanMatcher::Match(const Eigen::Vector2d& target_translation,
                                           const geometry::Rigid2d& initial_pose_estimate,
                                           const PointCloud& points,
@@ -150,16 +106,14 @@ geometry::Rigid2d CeresScanMatcher::Match(const Eigen::Vector2d& target_translat
       std::max(points.size(), static_cast<size_t>(options_.full_weight_num_points));
   const double scale = options_.occupied_space_weight / std::sqrt(num_points_for_weight);
   std::optional<LikelihoodField> field;
-  ceres::ResidualBlockId scan_block = nullptr;
   if (options_.likelihood_field.sigma_m > 0.0) {
     // The field around the scan as first placed: beyond 3 sigma of the walls
     // it is flat, and the solve moves a scan far less than 0.5 m.
     field.emplace(grid, initial_pose_estimate, points,
                   0.5 + 3.0 * options_.likelihood_field.sigma_m, options_.likelihood_field);
-    scan_block =
-        problem.AddResidualBlock(new LikelihoodFieldCost(scale, points, *field), nullptr, pose);
+    problem.AddResidualBlock(new LikelihoodFieldCost(scale, points, *field), nullptr, pose);
   } else {
-    scan_block = problem.AddResidualBlock(
+    problem.AddResidualBlock(
         new OccupiedSpaceCost(scale, points, grid, options_.unknown_probability), nullptr, pose);
   }
   if (options_.translation_weight > 0.0) {
@@ -168,13 +122,27 @@ geometry::Rigid2d CeresScanMatcher::Match(const Eigen::Vector2d& target_translat
             new TranslationDeltaCost{options_.translation_weight, target_translation}),
         nullptr, pose);
   }
-  const bool directional = options_.prediction_max_constrained_fraction > 0.0;
-  if (options_.prediction_translation_weight > 0.0 && predicted_translation != nullptr &&
-      !directional) {
-    problem.AddResidualBlock(
-        new ceres::AutoDiffCostFunction<TranslationDeltaCost, 2, 3>(new TranslationDeltaCost{
-            options_.prediction_translation_weight, *predicted_translation}),
-        nullptr, pose);
+  if (options_.prediction_translation_weight > 0.0 && predicted_translation != nullptr) {
+    if (options_.prediction_max_constrained_fraction == 0.0) {
+      problem.AddResidualBlock(
+          new ceres::AutoDiffCostFunction<TranslationDeltaCost, 2, 3>(new TranslationDeltaCost{
+              options_.prediction_translation_weight, *predicted_translation}),
+          nullptr, pose);
+    } else {
+      // The walls' normals, turned into the grid frame by the initial heading.
+      const Eigen::Matrix2d rotation =
+          Eigen::Rotation2Dd(initial_pose_estimate.theta()).toRotationMatrix();
+      const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eigen(
+          rotation * WallNormalInformation(points, kWallNeighbourRadiusM) * rotation.transpose());
+      for (int i = 0; i < 2; ++i) {
+        if (eigen.eigenvalues()(i) >= options_.prediction_max_constrained_fraction) continue;
+        problem.AddResidualBlock(
+            new ceres::AutoDiffCostFunction<DirectionalDeltaCost, 1, 3>(
+                new DirectionalDeltaCost{options_.prediction_translation_weight,
+                                         *predicted_translation, eigen.eigenvectors().col(i)}),
+            nullptr, pose);
+      }
+    }
   }
   if (options_.rotation_weight > 0.0) {
     problem.AddResidualBlock(new ceres::AutoDiffCostFunction<RotationDeltaCost, 1, 3>(
@@ -189,13 +157,6 @@ geometry::Rigid2d CeresScanMatcher::Match(const Eigen::Vector2d& target_translat
   solver_options.minimizer_progress_to_stdout = false;
   ceres::Solver::Summary summary;
   ceres::Solve(solver_options, &problem, &summary);
-  if (directional && options_.prediction_translation_weight > 0.0 &&
-      predicted_translation != nullptr) {
-    if (AddDegeneratePriors(&problem, scan_block, pose, points.size() * scale * scale,
-                            *predicted_translation)) {
-      ceres::Solve(solver_options, &problem, &summary);
-    }
-  }
   return geometry::Rigid2d(pose[0], pose[1], pose[2]);
 }
 

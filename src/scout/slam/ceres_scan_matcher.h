@@ -1,8 +1,6 @@
 #ifndef SCOUT_SLAM_CERES_SCAN_MATCHER_H_
 #define SCOUT_SLAM_CERES_SCAN_MATCHER_H_
 
-#include <ceres/problem.h>
-
 #include <Eigen/Core>
 
 #include "scout/geometry/rigid_transform.h"
@@ -35,11 +33,9 @@ struct CeresScanMatcherOptions {
   // a prediction only after its correlative search (the explorer, which runs
   // none, is not touched by it). 0 = none.
   double prediction_translation_weight = 0.0;
-  // > 0 (with the likelihood field): that prior acts only along the
-  // directions in which less than this fraction of the scan's points
-  // constrain the matched pose, measured after a first solve by how much the
-  // scan's cost rises when the pose is shifted by sigma each way (a fully
-  // covered wall across the shift counts 1). 0 = in every direction.
+  // > 0: that prior acts only along the directions across which less than
+  // this fraction of the scan's points lie on walls (WallNormalInformation),
+  // such as along a corridor. 0 = in every direction.
   double prediction_max_constrained_fraction = 0.0;
   // Solver iterations; scan matching runs once per scan, so this bounds its cost.
   int max_num_iterations = 20;
@@ -86,13 +82,6 @@ class CeresScanMatcher {
                           const Eigen::Vector2d* predicted_translation = nullptr) const;
 
  private:
-  // Adds the prediction prior along the directions the scan constrains less
-  // than prediction_max_constrained_fraction (see there), 'pose' being the
-  // first solve's; true if it added any.
-  bool AddDegeneratePriors(ceres::Problem* problem, ceres::ResidualBlockId scan_block, double* pose,
-                           double full_cost_scale,
-                           const Eigen::Vector2d& predicted_translation) const;
-
   CeresScanMatcherOptions options_;
 };
 

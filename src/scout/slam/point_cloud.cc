@@ -1,5 +1,6 @@
 #include "scout/slam/point_cloud.h"
 
+#include <Eigen/Eigenvalues>
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
@@ -85,6 +86,36 @@ PointCloud AdaptiveVoxelFilter(const PointCloud& points,
   }
   // Even the finest edge tried merges too much: keep every point.
   return in_range;
+}
+
+Eigen::Matrix2d WallNormalInformation(const PointCloud& points, double radius_m) {
+  if (!(radius_m > 0.0)) {
+    throw std::invalid_argument("WallNormalInformation: radius_m must be > 0");
+  }
+  Eigen::Matrix2d information = Eigen::Matrix2d::Zero();
+  if (points.empty()) return information;
+  const double radius_squared = radius_m * radius_m;
+  for (const Eigen::Vector2d& point : points) {
+    Eigen::Vector2d sum = Eigen::Vector2d::Zero();
+    Eigen::Matrix2d sum_outer = Eigen::Matrix2d::Zero();
+    int count = 0;
+    for (const Eigen::Vector2d& other : points) {
+      if ((other - point).squaredNorm() > radius_squared) continue;
+      sum += other;
+      sum_outer += other * other.transpose();
+      ++count;
+    }
+    if (count < 3) continue;
+    const Eigen::Vector2d mean = sum / count;
+    const Eigen::Matrix2d covariance = sum_outer / count - mean * mean.transpose();
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eigen(covariance);
+    // Along a line the spread across it is noise; a fifth of the spread
+    // along it (a standard deviation under half) still reads as a wall.
+    if (eigen.eigenvalues()(0) > 0.2 * eigen.eigenvalues()(1)) continue;
+    const Eigen::Vector2d normal = eigen.eigenvectors().col(0);
+    information += normal * normal.transpose();
+  }
+  return information / static_cast<double>(points.size());
 }
 
 }  // namespace scout::slam

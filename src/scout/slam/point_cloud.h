@@ -37,6 +37,15 @@ void Validate(const AdaptiveVoxelFilterOptions& options);
 // Throws std::invalid_argument on invalid options.
 PointCloud AdaptiveVoxelFilter(const PointCloud& points, const AdaptiveVoxelFilterOptions& options);
 
+// How the points' walls constrain a shift of the scan: (1 / N) times the sum
+// of n n^T over the points whose neighbours within 'radius_m' (at least two
+// besides the point) lie along a line, n that line's unit normal; the points
+// elsewhere (corners, clutter, isolated returns) add nothing. Its eigenvalue
+// along a direction is the fraction of the N points on walls across it: about
+// 0 along a featureless corridor, whether or not its map ends in view.
+// Throws std::invalid_argument unless radius_m > 0.
+Eigen::Matrix2d WallNormalInformation(const PointCloud& points, double radius_m);
+
 }  // namespace scout::slam
 
 #endif  // SCOUT_SLAM_POINT_CLOUD_H_

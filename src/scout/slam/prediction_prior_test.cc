@@ -3,6 +3,7 @@
 // prediction_max_constrained_fraction).
 #include <gtest/gtest.h>
 
+#include <Eigen/Eigenvalues>
 #include <cmath>
 #include <stdexcept>
 #include <vector>
@@ -102,19 +103,29 @@ TEST(PredictionPriorTest, LeavesDirectionsTheScanConstrainsToTheScan) {
   EXPECT_LT((none.translation() - truth.translation()).norm(), 0.005) << none;
 }
 
+// The fraction of a scan on walls across each direction: a corridor's
+// returns all lie on walls across y, none across x; a room's constrain both.
+TEST(PredictionPriorTest, WallNormalInformationSeesTheCorridorsOpenDirection) {
+  const Corridor corridor;
+  const PointCloud along = corridor.ForwardScan(Rigid2d(2.0, 0.1, 0.0));
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> corridor_eigen(
+      WallNormalInformation(along, 0.3));
+  EXPECT_LT(corridor_eigen.eigenvalues()(0), 0.01);
+  EXPECT_GT(corridor_eigen.eigenvalues()(1), 0.8);
+  EXPECT_GT(std::abs(corridor_eigen.eigenvectors().col(0).x()), 0.99);
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> room_eigen(
+      WallNormalInformation(testing::ScanPoints(testing::Room(), Rigid2d(0.3, -0.2, -0.4)), 0.3));
+  EXPECT_GT(room_eigen.eigenvalues()(0), 0.2);
+  // Isolated returns lie on no wall.
+  EXPECT_EQ(WallNormalInformation({{1.0, 0.0}, {0.0, 1.0}, {-1.0, 0.0}}, 0.3),
+            Eigen::Matrix2d::Zero());
+  EXPECT_THROW(WallNormalInformation(along, 0.0), std::invalid_argument);
+}
+
 TEST(PredictionPriorTest, RejectsInvalidOptions) {
   EXPECT_THROW(CeresScanMatcher{FieldOptions(-1.0, 0.0)}, std::invalid_argument);
   EXPECT_THROW(CeresScanMatcher{FieldOptions(1.0, 1.5)}, std::invalid_argument);
   EXPECT_THROW(CeresScanMatcher{FieldOptions(1.0, -0.1)}, std::invalid_argument);
-  CeresScanMatcherOptions probabilities = FieldOptions(1.0, 0.1);
-  probabilities.likelihood_field.sigma_m = 0.0;
-  try {
-    CeresScanMatcher{probabilities};
-    FAIL() << "a directional prior without a likelihood field was accepted";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("prediction_max_constrained_fraction"), std::string::npos)
-        << e.what();
-  }
 }
 
 }  // namespace
