@@ -159,7 +159,11 @@ nlohmann::json ReferenceSummary(const io::TrajectoryErrors& e, const io::ScanRef
           {"rpe_1s_trans_m", e.rpe_1s_trans_m},
           {"rpe_1s_rot_deg", e.rpe_1s_rot_deg},
           {"rpe_10s_trans_m", e.rpe_10s_trans_m},
-          {"rpe_10s_rot_deg", e.rpe_10s_rot_deg}};
+          {"rpe_10s_rot_deg", e.rpe_10s_rot_deg},
+          {"rpe_1s_trans_mean_m", e.rpe_1s_trans_mean_m},
+          {"rpe_1s_rot_mean_deg", e.rpe_1s_rot_mean_deg},
+          {"rpe_10s_trans_mean_m", e.rpe_10s_trans_mean_m},
+          {"rpe_10s_rot_mean_deg", e.rpe_10s_rot_mean_deg}};
 }
 
 }  // namespace
@@ -445,7 +449,10 @@ int RunReplay(const ReplayArgs& args) {
     std::cout << "reference: " << r["matched_scans"].get<int>() << " nodes matched, ATE RMSE "
               << value("ate_rmse_m") << " m, RPE 1 s " << value("rpe_1s_trans_m") << " m / "
               << value("rpe_1s_rot_deg") << " deg, 10 s " << value("rpe_10s_trans_m") << " m / "
-              << value("rpe_10s_rot_deg") << " deg\n";
+              << value("rpe_10s_rot_deg") << " deg (RMSE; mean absolute 1 s "
+              << value("rpe_1s_trans_mean_m") << " m / " << value("rpe_1s_rot_mean_deg")
+              << " deg, 10 s " << value("rpe_10s_trans_mean_m") << " m / "
+              << value("rpe_10s_rot_mean_deg") << " deg)\n";
   }
   {
     const nlohmann::json& c = summary["consistency"];

@@ -28,8 +28,8 @@ geometry::Rigid2d AlignRigid2d(const std::vector<PosePair>& pairs) {
 RelativePoseError ComputeRelativePoseError(const std::vector<PosePair>& time_sorted_pairs,
                                            double dt_s) {
   const std::vector<PosePair>& p = time_sorted_pairs;
-  double sum_trans2 = 0.0;
-  double sum_rot2 = 0.0;
+  double sum_trans = 0.0, sum_trans2 = 0.0;
+  double sum_rot = 0.0, sum_rot2 = 0.0;
   RelativePoseError result;
   for (size_t i = 0; i < p.size(); ++i) {
     const auto j = std::lower_bound(p.begin() + i, p.end(), p[i].time_s + dt_s,
@@ -39,13 +39,18 @@ RelativePoseError ComputeRelativePoseError(const std::vector<PosePair>& time_sor
     const geometry::Rigid2d ref_delta = p[i].reference.inverse() * j->reference;
     const geometry::Rigid2d est_delta = p[i].estimate.inverse() * j->estimate;
     const geometry::Rigid2d error = ref_delta.inverse() * est_delta;
-    sum_trans2 += error.translation().squaredNorm();
+    const double trans_m = error.translation().norm();
+    sum_trans += trans_m;
+    sum_trans2 += trans_m * trans_m;
     const double rot_deg = std::abs(error.theta()) * 180.0 / std::numbers::pi;
+    sum_rot += rot_deg;
     sum_rot2 += rot_deg * rot_deg;
     ++result.pairs;
   }
   result.trans_rmse_m = result.pairs > 0 ? std::sqrt(sum_trans2 / result.pairs) : kNaN;
   result.rot_rmse_deg = result.pairs > 0 ? std::sqrt(sum_rot2 / result.pairs) : kNaN;
+  result.trans_mean_m = result.pairs > 0 ? sum_trans / result.pairs : kNaN;
+  result.rot_mean_deg = result.pairs > 0 ? sum_rot / result.pairs : kNaN;
   return result;
 }
 
@@ -69,9 +74,13 @@ TrajectoryErrors ComputeTrajectoryErrors(const std::vector<PosePair>& pairs) {
   const RelativePoseError rpe_10s = ComputeRelativePoseError(sorted, 10.0);
   errors.rpe_1s_trans_m = rpe_1s.trans_rmse_m;
   errors.rpe_1s_rot_deg = rpe_1s.rot_rmse_deg;
+  errors.rpe_1s_trans_mean_m = rpe_1s.trans_mean_m;
+  errors.rpe_1s_rot_mean_deg = rpe_1s.rot_mean_deg;
   errors.rpe_1s_pairs = rpe_1s.pairs;
   errors.rpe_10s_trans_m = rpe_10s.trans_rmse_m;
   errors.rpe_10s_rot_deg = rpe_10s.rot_rmse_deg;
+  errors.rpe_10s_trans_mean_m = rpe_10s.trans_mean_m;
+  errors.rpe_10s_rot_mean_deg = rpe_10s.rot_mean_deg;
   errors.rpe_10s_pairs = rpe_10s.pairs;
   return errors;
 }

@@ -98,6 +98,8 @@ TEST(ComputeTrajectoryErrors, RpeOfAConstantHeadingDrift) {
   EXPECT_EQ(errors.rpe_10s_pairs, 21);  // t_i = 0 .. 10
   EXPECT_NEAR(errors.rpe_1s_rot_deg, 0.02 * kDegPerRad, 1e-9);
   EXPECT_NEAR(errors.rpe_10s_rot_deg, 0.2 * kDegPerRad, 1e-9);
+  // Every step's error is the same, so the mean equals the RMSE.
+  EXPECT_NEAR(errors.rpe_10s_rot_mean_deg, 0.2 * kDegPerRad, 1e-9);
   EXPECT_NEAR(errors.rpe_1s_trans_m, 0.0, 1e-12);
   EXPECT_NEAR(errors.ate_rmse_m, 0.0, 1e-12);  // headings do not enter the ATE
 }
@@ -121,6 +123,31 @@ TEST(ComputeTrajectoryErrors, RpeOfAScaleErrorAndGapsAreSkipped) {
   EXPECT_NEAR(errors.rpe_1s_trans_m, 0.1, 1e-9);
   EXPECT_NEAR(errors.rpe_10s_trans_m, 1.0, 1e-9);
   EXPECT_NEAR(errors.rpe_1s_rot_deg, 0.0, 1e-12);
+}
+
+TEST(ComputeTrajectoryErrors, RpeMeanAndRmseOfOneLargeStep) {
+  // Poses 1 s apart. Moving at 1 m/s, the estimate's first step is 0.3 m too
+  // long and the next two are right: 1 s errors 0.3, 0, 0 m, mean 0.1 m,
+  // RMSE 0.3 / sqrt(3) m. Standing still, the estimate turns 0.03 rad in its
+  // second step only: mean 0.01 rad, RMSE 0.03 / sqrt(3) rad.
+  std::vector<PosePair> moving, turning;
+  const double estimate_x[] = {0.0, 1.3, 2.3, 3.3};
+  const double estimate_theta[] = {0.0, 0.0, 0.03, 0.03};
+  for (int k = 0; k < 4; ++k) {
+    moving.push_back({1.0 * k, geometry::Rigid2d(estimate_x[k], 0, 0), geometry::Rigid2d(k, 0, 0)});
+    turning.push_back(
+        {1.0 * k, geometry::Rigid2d(2, 1, estimate_theta[k]), geometry::Rigid2d(2, 1, 0)});
+  }
+  const TrajectoryErrors m = ComputeTrajectoryErrors(moving);
+  EXPECT_EQ(m.rpe_1s_pairs, 3);
+  EXPECT_NEAR(m.rpe_1s_trans_mean_m, 0.1, 1e-12);
+  EXPECT_NEAR(m.rpe_1s_trans_m, 0.3 / std::sqrt(3.0), 1e-12);
+  EXPECT_NEAR(m.rpe_1s_rot_mean_deg, 0.0, 1e-12);
+  const TrajectoryErrors t = ComputeTrajectoryErrors(turning);
+  EXPECT_NEAR(t.rpe_1s_rot_mean_deg, 0.01 * kDegPerRad, 1e-9);
+  EXPECT_NEAR(t.rpe_1s_rot_deg, 0.03 / std::sqrt(3.0) * kDegPerRad, 1e-9);
+  EXPECT_NEAR(t.rpe_1s_trans_mean_m, 0.0, 1e-12);
+  EXPECT_TRUE(std::isnan(t.rpe_10s_rot_mean_deg));  // 3 s of data
 }
 
 TEST(ComputeTrajectoryErrors, NothingToAverageIsNaN) {

@@ -186,9 +186,18 @@ void AppendReplay(const std::vector<RunData>& runs, std::ostringstream& out) {
   std::vector<Row> rows;
   for (const RunData& run : runs) {
     const Json& s = run.summary;
-    const auto pair = [&](const std::string& trans, const std::string& rot) {
-      const std::optional<double> t = Number(s, trans), r = Number(s, rot);
-      return t && r ? Fixed(t, 3) + " / " + Fixed(r, 2) : std::string(kMissing);
+    // RMSE, and the mean absolute error in brackets (runs before it was
+    // recorded show the RMSE only).
+    const auto pair = [&](const std::string& interval) {
+      const std::string prefix = "reference/rpe_" + interval;
+      const std::optional<double> t = Number(s, prefix + "_trans_m"),
+                                  r = Number(s, prefix + "_rot_deg");
+      if (!t || !r) return std::string(kMissing);
+      std::string text = Fixed(t, 3) + " / " + Fixed(r, 2);
+      const std::optional<double> tm = Number(s, prefix + "_trans_mean_m"),
+                                  rm = Number(s, prefix + "_rot_mean_deg");
+      if (tm && rm) text += " (" + Fixed(tm, 3) + " / " + Fixed(rm, 2) + ")";
+      return text;
     };
     // Millimetres, the reference's own in brackets (runs before it was measured: a dash).
     const auto consistency = [&]() {
@@ -206,13 +215,13 @@ void AppendReplay(const std::vector<RunData>& runs, std::ostringstream& out) {
          Fixed(Number(s, "realtime_factor"), 2), Fixed(Number(s, "peak_rss_mb"), 0),
          Count(Number(s, "slam/submaps")), Count(Number(s, "slam/loop_closures")),
          Count(Number(s, "reference/matched_scans")), Fixed(Number(s, "reference/ate_rmse_m"), 3),
-         pair("reference/rpe_1s_trans_m", "reference/rpe_1s_rot_deg"),
-         pair("reference/rpe_10s_trans_m", "reference/rpe_10s_rot_deg"), consistency()});
+         pair("1s"), pair("10s"), consistency()});
   }
-  AppendTable({"run", "dataset", "odom noise", "scans", "data s", "wall s", "× real time",
-               "peak RSS MiB", "submaps", "loop closures", "matched scans", "ATE RMSE m",
-               "RPE 1 s m / °", "RPE 10 s m / °", "scan consistency mm (reference)"},
-              rows, out);
+  AppendTable(
+      {"run", "dataset", "odom noise", "scans", "data s", "wall s", "× real time", "peak RSS MiB",
+       "submaps", "loop closures", "matched scans", "ATE RMSE m", "RPE 1 s m / ° RMSE (mean)",
+       "RPE 10 s m / ° RMSE (mean)", "scan consistency mm (reference)"},
+      rows, out);
   AppendStrategyTable(runs, /*with_epsilon=*/false, out);
 }
 

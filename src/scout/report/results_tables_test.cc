@@ -43,7 +43,9 @@ TEST(ResultsTables, ReplayShowsSlamAccuracyAndCost) {
     "wall_time_s": 60.2, "realtime_factor": 19.94, "peak_rss_mb": 312.6,
     "slam": {"submaps": 14, "loop_closures": 52, "optimizations": 9},
     "reference": {"matched_scans": 905, "ate_rmse_m": 0.0812, "rpe_1s_trans_m": 0.0123,
-                  "rpe_1s_rot_deg": 0.41, "rpe_10s_trans_m": 0.0734, "rpe_10s_rot_deg": 1.27},
+                  "rpe_1s_rot_deg": 0.41, "rpe_10s_trans_m": 0.0734, "rpe_10s_rot_deg": 1.27,
+                  "rpe_1s_trans_mean_m": 0.0101, "rpe_1s_rot_mean_deg": 0.33,
+                  "rpe_10s_trans_mean_m": 0.0612, "rpe_10s_rot_mean_deg": 0.98},
     "consistency": {"estimate_mean_distance_m": 0.01224, "reference_mean_distance_m": 0.01629},
     "frontier": {"strategies": {"exact": {"queried_points": 12345, "time_ms": 90.0,
       "accuracy": 1.0, "precision": 1.0, "recall": 1.0, "P": 0.8766, "fp": 0, "fn": 0}}}})");
@@ -52,7 +54,8 @@ TEST(ResultsTables, ReplayShowsSlamAccuracyAndCost) {
   EXPECT_TRUE(Contains(md, "scout replay intel.log.gz --odom-noise 1\n")) << md;
   EXPECT_TRUE(Contains(md,
                        "| tables_replay | intel-corrected | 1.0 | 910 | 1200 | 60 | 19.94 | "
-                       "313 | 14 | 52 | 905 | 0.081 | 0.012 / 0.41 | 0.073 / 1.27 | 12.2 (16.3) |"))
+                       "313 | 14 | 52 | 905 | 0.081 | 0.012 / 0.41 (0.010 / 0.33) | "
+                       "0.073 / 1.27 (0.061 / 0.98) | 12.2 (16.3) |"))
       << md;
   // No frontier.csv: the rounds come from the SLAM optimisations.
   EXPECT_TRUE(Contains(md,

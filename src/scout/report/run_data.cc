@@ -62,6 +62,10 @@ constexpr const char* kSummaryNumbers[] = {"seed",
                                            "reference/rpe_1s_rot_deg",
                                            "reference/rpe_10s_trans_m",
                                            "reference/rpe_10s_rot_deg",
+                                           "reference/rpe_1s_trans_mean_m",
+                                           "reference/rpe_1s_rot_mean_deg",
+                                           "reference/rpe_10s_trans_mean_m",
+                                           "reference/rpe_10s_rot_mean_deg",
                                            "consistency/*",
                                            "frontier/strategies/*/*"};
 
