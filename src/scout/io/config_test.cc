@@ -44,6 +44,8 @@ TEST_F(ConfigTest, SlamSectionOfTheDefaultFileMatchesTheBuiltInDefaults) {
   EXPECT_EQ(c.local.use_odometry, d.local.use_odometry);
   EXPECT_NEAR(c.local.real_time_correlative_scan_matcher.angular_search_window_rad,
               d.local.real_time_correlative_scan_matcher.angular_search_window_rad, 1e-12);
+  EXPECT_EQ(c.local.real_time_correlative_scan_matcher.initial_estimate_at_angular_edge,
+            d.local.real_time_correlative_scan_matcher.initial_estimate_at_angular_edge);
   EXPECT_DOUBLE_EQ(c.local.ceres_scan_matcher.occupied_space_weight,
                    d.local.ceres_scan_matcher.occupied_space_weight);
   EXPECT_EQ(c.local.ceres_scan_matcher.full_weight_num_points,
@@ -153,6 +155,21 @@ TEST_F(ConfigTest, SlamValuesOverrideDefaultsAndErrorsNameTheKey) {
                                     "      likelihood_field_sigma_m: 0.06\n"))
                        .slam.local.real_time_correlative_scan_matcher.likelihood_field.sigma_m,
                    0.06);
+  for (const bool edge : {false, true}) {
+    EXPECT_EQ(LoadConfig(Write(std::string("slam:\n  local:\n    "
+                                           "real_time_correlative_scan_matcher:\n"
+                                           "      initial_estimate_at_angular_edge: ") +
+                               (edge ? "true" : "false") + "\n"))
+                  .slam.local.real_time_correlative_scan_matcher.initial_estimate_at_angular_edge,
+              edge);
+  }
+  e = ErrorOf(
+      "slam:\n  local:\n    real_time_correlative_scan_matcher:\n"
+      "      initial_estimate_at_angular_edge: 3\n");
+  EXPECT_NE(
+      e.find("slam.local.real_time_correlative_scan_matcher.initial_estimate_at_angular_edge"),
+      std::string::npos)
+      << e;
   e = ErrorOf(
       "slam:\n  local:\n    real_time_correlative_scan_matcher:\n"
       "      likelihood_field_occupied_probability: 1.5\n");

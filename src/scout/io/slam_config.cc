@@ -80,6 +80,7 @@ void ReadLocal(YamlSection s, slam::LocalSlamOptions* o) {
     c.ReadNonNegative("rotation_delta_cost_weight", &m.rotation_delta_cost_weight);
     ReadGridProbability(c, "unknown_probability", &m.unknown_probability);
     ReadLikelihoodField(c, &m.likelihood_field);
+    c.ReadBool("initial_estimate_at_angular_edge", &m.initial_estimate_at_angular_edge);
     c.RejectUnknownKeys();
   }
   ReadCeresScanMatcher(s.Section("ceres_scan_matcher"), &o->ceres_scan_matcher, /*local=*/true);

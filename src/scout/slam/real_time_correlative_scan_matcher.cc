@@ -84,19 +84,30 @@ ScanMatchResult RealTimeCorrelativeScanMatcher::Match(
     return v + (v == grid::kUnknownValue) * unknown_value;
   };
 
-  // A candidate: the scan turned by delta_angle, then shifted by (x, y) cells,
-  // with the mean score of its points.
-  const auto offer = [&](double mean_score, const geometry::Rigid2d& rotated, double delta_angle,
-                         int x, int y) {
+  // A candidate: the scan turned by k angle steps (delta_angle), then shifted
+  // by (x, y) cells, with the mean score of its points.
+  int best_angle_step = 0;
+  double initial_score = 0.0;
+  const auto offer = [&](double mean_score, const geometry::Rigid2d& rotated, int k,
+                         double delta_angle, int x, int y) {
     const double squared_shift_m2 = resolution * resolution * (x * x + y * y);
     const double score =
         mean_score * std::exp(-(options_.translation_delta_cost_weight * squared_shift_m2 +
                                 options_.rotation_delta_cost_weight * delta_angle * delta_angle));
+    if (k == 0 && x == 0 && y == 0) initial_score = score;
     if (score > best.score) {
       best.score = score;
       best.pose = geometry::Rigid2d(rotated.translation() + resolution * Eigen::Vector2d(x, y),
                                     rotated.theta());
+      best_angle_step = k;
     }
+  };
+  const auto result = [&]() {
+    if (options_.initial_estimate_at_angular_edge && num_angles_each_side > 0 &&
+        std::abs(best_angle_step) == num_angles_each_side) {
+      return ScanMatchResult{initial_pose_estimate, initial_score};
+    }
+    return best;
   };
 
   if (options_.likelihood_field.sigma_m > 0.0) {
@@ -124,11 +135,11 @@ ScanMatchResult RealTimeCorrelativeScanMatcher::Match(
             field.GetValue(cell.y + y, cell.x + x, &value);
             sum += value;
           }
-          offer(sum / static_cast<double>(points.size()), rotated, delta_angle, x, y);
+          offer(sum / static_cast<double>(points.size()), rotated, k, delta_angle, x, y);
         }
       }
     }
-    return best;
+    return result();
   }
 
   std::vector<grid::CellIndex> cells(points.size());
@@ -159,11 +170,11 @@ ScanMatchResult RealTimeCorrelativeScanMatcher::Match(
             min_probability +
             (static_cast<double>(sum) / static_cast<double>(points.size()) - 1.0) *
                 probability_per_value;
-        offer(mean_probability, rotated, delta_angle, x, y);
+        offer(mean_probability, rotated, k, delta_angle, x, y);
       }
     }
   }
-  return best;
+  return result();
 }
 
 }  // namespace scout::slam

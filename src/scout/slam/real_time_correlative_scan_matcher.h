@@ -29,6 +29,13 @@ struct RealTimeCorrelativeScanMatcherOptions {
   // breaks), but the fr079 bag went from 0.079 to 0.084 m and its
   // synchronous replay from 22 to 33 s (docs/EXPERIMENTS.md).
   LikelihoodFieldOptions likelihood_field;
+  // true: a best candidate turned by the whole angular window (a step of the
+  // window's edge) is not trusted, and the initial estimate is returned
+  // instead: the best turn may lie beyond the window, and a pick on its edge
+  // was a wrong wall where it was looked at (freiburg-079 seed 1 with the
+  // prediction prior: 20.2 degrees at a 20 degree window, a broken map;
+  // docs/EXPERIMENTS.md).
+  bool initial_estimate_at_angular_edge = false;
 };
 
 // Throws std::invalid_argument naming the first invalid option.
@@ -39,7 +46,8 @@ void Validate(const RealTimeCorrelativeScanMatcherOptions& options);
 // the scan's largest range) and every cell offset within the window. A
 // candidate scores the mean probability of its points' cells (unknown counts
 // as kMinProbability) times exp(-(w_t |dt|² + w_r |dθ|²)), which prefers the
-// initial estimate among equally good matches.
+// initial estimate among equally good matches. See
+// initial_estimate_at_angular_edge for picks on the window's angular edge.
 class RealTimeCorrelativeScanMatcher {
  public:
   // Throws std::invalid_argument on invalid options.

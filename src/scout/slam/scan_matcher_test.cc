@@ -248,6 +248,36 @@ TEST(RealTimeCorrelativeScanMatcherTest, ThenCeresRefinesBelowACell) {
   EXPECT_LT(AngleError(fine, truth), 0.01) << fine;
 }
 
+TEST(RealTimeCorrelativeScanMatcherTest, APickOnTheAngularEdgeCanFallBackToTheInitialEstimate) {
+  const grid::ProbabilityGrid grid = testing::RoomGrid();
+  const Rigid2d truth(-0.4, 0.3, 0.2);
+  const PointCloud points = testing::ScanPoints(testing::Room(), truth);
+  RealTimeCorrelativeScanMatcherOptions options;  // a window of 20 degrees
+  // Turned 22 degrees off the truth: the best candidate in the window is
+  // the one turned furthest toward it, on the window's edge.
+  const Rigid2d beyond(truth.x(), truth.y(), truth.theta() - 22.0 * std::numbers::pi / 180.0);
+  const ScanMatchResult on_edge =
+      RealTimeCorrelativeScanMatcher(options).Match(beyond, points, grid);
+  EXPECT_NEAR(on_edge.pose.theta() - beyond.theta(), options.angular_search_window_rad, 0.01);
+  options.initial_estimate_at_angular_edge = true;
+  const ScanMatchResult fallen_back =
+      RealTimeCorrelativeScanMatcher(options).Match(beyond, points, grid);
+  EXPECT_EQ(fallen_back.pose.translation(), beyond.translation());
+  EXPECT_EQ(fallen_back.pose.theta(), beyond.theta());
+  EXPECT_GT(fallen_back.score, 0.0);  // the initial estimate's own score
+  EXPECT_LT(fallen_back.score, on_edge.score);
+  // Within the window the option changes nothing.
+  const Rigid2d within(truth.x() + 0.08, truth.y() - 0.07, truth.theta() - 0.2);
+  options.initial_estimate_at_angular_edge = false;
+  const ScanMatchResult plain = RealTimeCorrelativeScanMatcher(options).Match(within, points, grid);
+  options.initial_estimate_at_angular_edge = true;
+  const ScanMatchResult guarded =
+      RealTimeCorrelativeScanMatcher(options).Match(within, points, grid);
+  EXPECT_LT(AngleError(guarded.pose, truth), 0.01) << guarded.pose;
+  EXPECT_EQ(guarded.pose.translation(), plain.pose.translation());
+  EXPECT_EQ(guarded.pose.theta(), plain.pose.theta());
+}
+
 TEST(RealTimeCorrelativeScanMatcherTest, EmptyScanAndInvalidOptions) {
   const grid::ProbabilityGrid grid = testing::RoomGrid();
   const Rigid2d initial(0.1, 0.2, 0.3);
