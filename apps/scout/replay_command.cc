@@ -351,6 +351,8 @@ int RunReplay(const ReplayArgs& args) {
   summary["slam"] = io::SlamSummary(stats, config.slam.pose_graph.synchronous);
   summary["slam"]["submap_events"] = stats.num_submap_events;
   summary["slam"]["settings"] = args.explore_slam ? "explore" : "slam";
+  summary["slam"]["angular_edge_matches"] =
+      builder.local_trajectory_builder().statistics().num_angular_edge_matches;
   const std::vector<int> node_scans = NodeScans(dataset, nodes);
   summary["consistency"] =
       ConsistencySummary(dataset, nodes, node_scans, reference ? &*reference : nullptr,

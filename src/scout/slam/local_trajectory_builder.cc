@@ -66,7 +66,9 @@ geometry::Rigid2d LocalTrajectoryBuilder::MatchScan(const geometry::Rigid2d& pre
   const Eigen::Vector2d predicted_translation = prediction_in_submap.translation();
   const Eigen::Vector2d* prediction_prior = nullptr;
   if (options_.use_online_correlative_scan_matching) {
-    initial = real_time_matcher_.Match(prediction_in_submap, points, grid).pose;
+    bool on_angular_edge = false;
+    initial = real_time_matcher_.Match(prediction_in_submap, points, grid, &on_angular_edge).pose;
+    statistics_.num_angular_edge_matches += on_angular_edge ? 1 : 0;
     prediction_prior = &predicted_translation;
   }
   // Both priors pull toward the initial estimate. Cartographer pulls the

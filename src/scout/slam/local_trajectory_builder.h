@@ -113,6 +113,9 @@ class LocalTrajectoryBuilder {
     int num_out_of_order_scans = 0;
     int num_matched = 0;
     int num_inserted = 0;
+    // Scans whose real-time correlative match lay on its angular window's
+    // edge (many: the window may be too narrow for the odometry's turns).
+    int num_angular_edge_matches = 0;
     // Time spent in scan matching, summed (ms).
     double scan_matching_ms = 0.0;
   };

@@ -237,6 +237,38 @@ TEST(LocalTrajectoryBuilderTest, PredictionPriorActsAlongACorridorAfterTheSearch
   EXPECT_EQ(CorridorLagM(181, explore), CorridorLagM(181));
 }
 
+// Odometry that claims a turn of 22 degrees the robot did not make: the
+// correlative search (20 degrees each way) ends on its window's edge, which
+// the statistics count; with initial_estimate_at_angular_edge the scan is
+// matched from the odometry's wrong turn instead of from the edge.
+TEST(LocalTrajectoryBuilderTest, CountsMatchesOnTheAngularWindowsEdge) {
+  const std::vector<testing::Segment> walls = testing::Room();
+  const Rigid2d truth(-0.4, 0.3, 0.2);
+  const auto final_heading_error = [&](bool keep_prediction, int* edge_matches) {
+    LocalSlamOptions options;
+    options.real_time_correlative_scan_matcher.initial_estimate_at_angular_edge = keep_prediction;
+    LocalTrajectoryBuilder builder(options);
+    builder.AddOdometry({0.0, Rigid2d()});
+    EXPECT_TRUE(builder.AddScan(testing::CastScan(walls, truth, 0.0)).has_value());
+    builder.AddOdometry({0.5, Rigid2d()});  // still: a right prediction
+    builder.AddScan(testing::CastScan(walls, truth, 0.5));
+    EXPECT_EQ(builder.statistics().num_angular_edge_matches, 0);
+    builder.AddOdometry({1.0, Rigid2d(0.0, 0.0, 22.0 * std::numbers::pi / 180.0)});
+    builder.AddScan(testing::CastScan(walls, truth, 1.0));
+    *edge_matches = builder.statistics().num_angular_edge_matches;
+    // Local SLAM's frame starts at the first scan's pose: the robot stood still.
+    return std::abs(builder.last_pose().theta());
+  };
+  int edge_matches = 0;
+  const double from_edge = final_heading_error(false, &edge_matches);
+  EXPECT_EQ(edge_matches, 1);
+  // The edge lies 2 degrees from the truth: Ceres takes it the rest.
+  EXPECT_LT(from_edge, 0.01);
+  const double from_prediction = final_heading_error(true, &edge_matches);
+  EXPECT_EQ(edge_matches, 1);
+  EXPECT_GT(from_prediction, 0.1);
+}
+
 TEST(LocalTrajectoryBuilderTest, ResultCarriesSubmapsAndSkipsUnusableScans) {
   LocalSlamOptions options;
   options.submaps.num_range_data = 2;

@@ -50,7 +50,8 @@ RealTimeCorrelativeScanMatcher::RealTimeCorrelativeScanMatcher(
 
 ScanMatchResult RealTimeCorrelativeScanMatcher::Match(
     const geometry::Rigid2d& initial_pose_estimate, const PointCloud& points,
-    const grid::ProbabilityGrid& grid) const {
+    const grid::ProbabilityGrid& grid, bool* on_angular_edge) const {
+  if (on_angular_edge != nullptr) *on_angular_edge = false;
   ScanMatchResult best{initial_pose_estimate, 0.0};
   if (points.empty()) return best;
   const grid::MapLimits& limits = grid.limits();
@@ -103,8 +104,9 @@ ScanMatchResult RealTimeCorrelativeScanMatcher::Match(
     }
   };
   const auto result = [&]() {
-    if (options_.initial_estimate_at_angular_edge && num_angles_each_side > 0 &&
-        std::abs(best_angle_step) == num_angles_each_side) {
+    const bool edge = num_angles_each_side > 0 && std::abs(best_angle_step) == num_angles_each_side;
+    if (on_angular_edge != nullptr) *on_angular_edge = edge;
+    if (edge && options_.initial_estimate_at_angular_edge) {
       return ScanMatchResult{initial_pose_estimate, initial_score};
     }
     return best;

@@ -253,15 +253,20 @@ TEST(RealTimeCorrelativeScanMatcherTest, APickOnTheAngularEdgeCanFallBackToTheIn
   const Rigid2d truth(-0.4, 0.3, 0.2);
   const PointCloud points = testing::ScanPoints(testing::Room(), truth);
   RealTimeCorrelativeScanMatcherOptions options;  // a window of 20 degrees
+  options.initial_estimate_at_angular_edge = false;
   // Turned 22 degrees off the truth: the best candidate in the window is
   // the one turned furthest toward it, on the window's edge.
   const Rigid2d beyond(truth.x(), truth.y(), truth.theta() - 22.0 * std::numbers::pi / 180.0);
+  bool edge = false;
   const ScanMatchResult on_edge =
-      RealTimeCorrelativeScanMatcher(options).Match(beyond, points, grid);
+      RealTimeCorrelativeScanMatcher(options).Match(beyond, points, grid, &edge);
   EXPECT_NEAR(on_edge.pose.theta() - beyond.theta(), options.angular_search_window_rad, 0.01);
+  EXPECT_TRUE(edge);
   options.initial_estimate_at_angular_edge = true;
+  edge = false;
   const ScanMatchResult fallen_back =
-      RealTimeCorrelativeScanMatcher(options).Match(beyond, points, grid);
+      RealTimeCorrelativeScanMatcher(options).Match(beyond, points, grid, &edge);
+  EXPECT_TRUE(edge);
   EXPECT_EQ(fallen_back.pose.translation(), beyond.translation());
   EXPECT_EQ(fallen_back.pose.theta(), beyond.theta());
   EXPECT_GT(fallen_back.score, 0.0);  // the initial estimate's own score
@@ -272,7 +277,8 @@ TEST(RealTimeCorrelativeScanMatcherTest, APickOnTheAngularEdgeCanFallBackToTheIn
   const ScanMatchResult plain = RealTimeCorrelativeScanMatcher(options).Match(within, points, grid);
   options.initial_estimate_at_angular_edge = true;
   const ScanMatchResult guarded =
-      RealTimeCorrelativeScanMatcher(options).Match(within, points, grid);
+      RealTimeCorrelativeScanMatcher(options).Match(within, points, grid, &edge);
+  EXPECT_FALSE(edge);
   EXPECT_LT(AngleError(guarded.pose, truth), 0.01) << guarded.pose;
   EXPECT_EQ(guarded.pose.translation(), plain.pose.translation());
   EXPECT_EQ(guarded.pose.theta(), plain.pose.theta());
