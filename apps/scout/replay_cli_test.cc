@@ -155,6 +155,10 @@ TEST_F(ReplayCli, MapsTheLoopAccuratelyAndWritesEveryOutput) {
   EXPECT_TRUE(s["interrupted_by"].is_null());
   EXPECT_EQ(s["scans"], s["dataset_scans"]);
   EXPECT_GT(s["slam"]["nodes"].get<int>(), 200);
+  // Good odometry: the real-time matcher's best turn never lies on its
+  // window's edge, and nothing warns about it.
+  EXPECT_EQ(s["slam"]["angular_edge_matches"], 0);
+  EXPECT_EQ(r.output.find("real-time matcher's window"), std::string::npos) << r.output;
   EXPECT_GE(s["slam"]["submaps"].get<int>(), 4) << s["slam"].dump();
   EXPECT_GE(s["slam"]["optimizations"].get<int>(), 2);
   EXPECT_GT(s["slam"]["loop_closures"].get<int>(), 0) << s["slam"].dump();
@@ -408,6 +412,27 @@ TEST_F(ReplayCli, AReferenceThatStandsStillIsNamedInAWarning) {
                                  "--reference " + Log() + " --out " + (Dir() / "moving").string());
   ASSERT_EQ(moving.exit_code, 0) << moving.output;
   EXPECT_EQ(moving.output.find("measure no reference"), std::string::npos) << moving.output;
+}
+
+TEST_F(ReplayCli, OdometryTurningBeyondTheSearchWindowIsNamedInAWarning) {
+  // A window of half a degree against odometry whose heading wanders by about
+  // that much per scan (noise scale 3): many best turns lie on the edge.
+  const fs::path config = Dir() / "narrow.yaml";
+  std::ofstream(config) << "slam:\n  local:\n    real_time_correlative_scan_matcher:\n"
+                           "      angular_search_window_deg: 0.5\n";
+  const fs::path out = Dir() / "narrow";
+  const Result r =
+      RunScout("replay " + Log() + " --quiet --synchronous --max-scans 100 " +
+               "--odom-noise 3 --seed 1 --config " + config.string() + " --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const nlohmann::json s = nlohmann::json::parse(ReadFile(out / "summary.json"));
+  const int edges = s["slam"]["angular_edge_matches"].get<int>();
+  EXPECT_GE(edges, 3) << s["slam"].dump();
+  EXPECT_NE(r.output.find("replay: warning: " + std::to_string(edges) + " of "), std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("window (0.5 deg each way)"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("angular_search_window_deg may match them"), std::string::npos)
+      << r.output;
 }
 
 TEST_F(ReplayCli, ARunIntoAUsedDirectoryLeavesNoEarlierOutputBehind) {

@@ -7,6 +7,7 @@
 #include <iostream>
 #include <limits>
 #include <nlohmann/json.hpp>
+#include <numbers>
 #include <optional>
 #include <sstream>
 
@@ -15,6 +16,7 @@
 #include "apps/scout/report_command.h"
 #include "scout/common/atomic_file.h"
 #include "scout/common/error.h"
+#include "scout/common/format.h"
 #include "scout/common/resource_usage.h"
 #include "scout/exploration/exploration_options.h"
 #include "scout/explore/map_navigation_points.h"
@@ -351,8 +353,26 @@ int RunReplay(const ReplayArgs& args) {
   summary["slam"] = io::SlamSummary(stats, config.slam.pose_graph.synchronous);
   summary["slam"]["submap_events"] = stats.num_submap_events;
   summary["slam"]["settings"] = args.explore_slam ? "explore" : "slam";
-  summary["slam"]["angular_edge_matches"] =
-      builder.local_trajectory_builder().statistics().num_angular_edge_matches;
+  {
+    // More than the odd glitch on the window's edge: the odometry turns the
+    // scans further than the search looks (one in 400 on the Radish logs).
+    const slam::LocalTrajectoryBuilder::Statistics& local =
+        builder.local_trajectory_builder().statistics();
+    summary["slam"]["angular_edge_matches"] = local.num_angular_edge_matches;
+    if (local.num_angular_edge_matches >= 3 &&
+        local.num_angular_edge_matches > 0.01 * local.num_matched) {
+      const slam::RealTimeCorrelativeScanMatcherOptions& m =
+          config.slam.local.real_time_correlative_scan_matcher;
+      std::cerr << "replay: warning: " << local.num_angular_edge_matches << " of "
+                << local.num_matched << " matched scans found their best turn on the edge of "
+                << "the real-time matcher's window ("
+                << FormatNumber(m.angular_search_window_rad * 180.0 / std::numbers::pi)
+                << " deg each way): the odometry turns more than it searches; "
+                << (m.initial_estimate_at_angular_edge ? "their predictions were kept. " : "")
+                << "A wider slam.local.real_time_correlative_scan_matcher."
+                   "angular_search_window_deg may match them\n";
+    }
+  }
   const std::vector<int> node_scans = NodeScans(dataset, nodes);
   summary["consistency"] =
       ConsistencySummary(dataset, nodes, node_scans, reference ? &*reference : nullptr,
