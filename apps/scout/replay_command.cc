@@ -354,8 +354,9 @@ int RunReplay(const ReplayArgs& args) {
   summary["slam"]["submap_events"] = stats.num_submap_events;
   summary["slam"]["settings"] = args.explore_slam ? "explore" : "slam";
   {
-    // More than the odd glitch on the window's edge: the odometry turns the
-    // scans further than the search looks (one in 400 on the Radish logs).
+    // More than the odd glitch on the window's edge: the odometry's turns are
+    // off by more than the search looks (the eight Radish logs with injected
+    // noise, seeds 1-12: at most one such scan per run; the fr079 bag: none).
     const slam::LocalTrajectoryBuilder::Statistics& local =
         builder.local_trajectory_builder().statistics();
     summary["slam"]["angular_edge_matches"] = local.num_angular_edge_matches;
@@ -367,7 +368,7 @@ int RunReplay(const ReplayArgs& args) {
                 << local.num_matched << " matched scans found their best turn on the edge of "
                 << "the real-time matcher's window ("
                 << FormatNumber(m.angular_search_window_rad * 180.0 / std::numbers::pi)
-                << " deg each way): the odometry turns more than it searches; "
+                << " deg each way): the odometry's turns are off by more than it searches; "
                 << (m.initial_estimate_at_angular_edge ? "their predictions were kept. " : "")
                 << "A wider slam.local.real_time_correlative_scan_matcher."
                    "angular_search_window_deg may match them\n";

@@ -32,7 +32,7 @@ geometry::Rigid2d AlignRigid2d(const std::vector<PosePair>& pairs);
 //   est_i^-1 est_j. Both statistics, because published figures use either:
 //   Cartographer's relations tool (cartographer_compute_relations_metrics)
 //   prints the mean absolute error (with its standard deviation), while TUM's
-//   evaluate_rpe prints the RMSE; on a trajectory with a few large errors the
+//   evaluate_rpe leads with the RMSE; on a trajectory with a few large errors the
 //   RMSE is well above the mean (the fr079 bag's 10 s rotation: 1.15 against
 //   0.85 degrees).
 // Errors with nothing to average over (no pairs) are NaN.
