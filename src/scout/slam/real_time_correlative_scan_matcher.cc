@@ -85,12 +85,12 @@ ScanMatchResult RealTimeCorrelativeScanMatcher::Match(
     return v + (v == grid::kUnknownValue) * unknown_value;
   };
 
-  // A candidate: the scan turned by k angle steps (delta_angle), then shifted
+  // A candidate: the scan turned by k angle steps ('rotated'), then shifted
   // by (x, y) cells, with the mean score of its points.
   int best_angle_step = 0;
   double initial_score = 0.0;
-  const auto offer = [&](double mean_score, const geometry::Rigid2d& rotated, int k,
-                         double delta_angle, int x, int y) {
+  const auto offer = [&](double mean_score, const geometry::Rigid2d& rotated, int k, int x, int y) {
+    const double delta_angle = k * angle_step;
     const double squared_shift_m2 = resolution * resolution * (x * x + y * y);
     const double score =
         mean_score * std::exp(-(options_.translation_delta_cost_weight * squared_shift_m2 +
@@ -137,7 +137,7 @@ ScanMatchResult RealTimeCorrelativeScanMatcher::Match(
             field.GetValue(cell.y + y, cell.x + x, &value);
             sum += value;
           }
-          offer(sum / static_cast<double>(points.size()), rotated, k, delta_angle, x, y);
+          offer(sum / static_cast<double>(points.size()), rotated, k, x, y);
         }
       }
     }
@@ -172,7 +172,7 @@ ScanMatchResult RealTimeCorrelativeScanMatcher::Match(
             min_probability +
             (static_cast<double>(sum) / static_cast<double>(points.size()) - 1.0) *
                 probability_per_value;
-        offer(mean_probability, rotated, k, delta_angle, x, y);
+        offer(mean_probability, rotated, k, x, y);
       }
     }
   }
