@@ -360,6 +360,8 @@ int RunReplay(const ReplayArgs& args) {
     const slam::LocalTrajectoryBuilder::Statistics& local =
         builder.local_trajectory_builder().statistics();
     summary["slam"]["angular_edge_matches"] = local.num_angular_edge_matches;
+    summary["slam"]["second_searches"] = local.num_second_searches;
+    summary["slam"]["second_search_wins"] = local.num_second_search_wins;
     if (local.num_angular_edge_matches >= 3 &&
         local.num_angular_edge_matches > 0.01 * local.num_matched) {
       const slam::RealTimeCorrelativeScanMatcherOptions& m =

@@ -46,6 +46,8 @@ TEST_F(ConfigTest, SlamSectionOfTheDefaultFileMatchesTheBuiltInDefaults) {
               d.local.real_time_correlative_scan_matcher.angular_search_window_rad, 1e-12);
   EXPECT_EQ(c.local.real_time_correlative_scan_matcher.initial_estimate_at_angular_edge,
             d.local.real_time_correlative_scan_matcher.initial_estimate_at_angular_edge);
+  EXPECT_NEAR(c.local.second_search_after_turn_rad, d.local.second_search_after_turn_rad, 1e-12);
+  EXPECT_DOUBLE_EQ(c.local.second_search_min_gain, d.local.second_search_min_gain);
   EXPECT_DOUBLE_EQ(c.local.ceres_scan_matcher.occupied_space_weight,
                    d.local.ceres_scan_matcher.occupied_space_weight);
   EXPECT_EQ(c.local.ceres_scan_matcher.full_weight_num_points,
@@ -194,6 +196,16 @@ TEST_F(ConfigTest, SlamValuesOverrideDefaultsAndErrorsNameTheKey) {
     e = ErrorOf(yaml);
     EXPECT_NE(e.find(expected), std::string::npos) << e;
   }
+  // The second search after a surprising match: its threshold and gain.
+  const ScoutConfig second =
+      LoadConfig(Write("slam:\n  local:\n    second_search_after_turn_deg: 0\n"
+                       "    second_search_min_gain: 0.1\n"));
+  EXPECT_EQ(second.slam.local.second_search_after_turn_rad, 0.0);
+  EXPECT_DOUBLE_EQ(second.slam.local.second_search_min_gain, 0.1);
+  e = ErrorOf("slam:\n  local:\n    second_search_after_turn_deg: 200\n");
+  EXPECT_NE(e.find("slam.local.second_search_after_turn_deg"), std::string::npos) << e;
+  e = ErrorOf("slam:\n  local:\n    second_search_min_gain: -0.1\n");
+  EXPECT_NE(e.find("slam.local.second_search_min_gain"), std::string::npos) << e;
   e = ErrorOf("slam:\n  local:\n    ceres_scan_matcher:\n      likelihood_field_sigma_m: -1\n");
   EXPECT_NE(e.find("slam.local.ceres_scan_matcher.likelihood_field_sigma_m"), std::string::npos)
       << e;

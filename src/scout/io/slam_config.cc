@@ -83,6 +83,8 @@ void ReadLocal(YamlSection s, slam::LocalSlamOptions* o) {
     c.ReadBool("initial_estimate_at_angular_edge", &m.initial_estimate_at_angular_edge);
     c.RejectUnknownKeys();
   }
+  ReadAngularWindow(s, "second_search_after_turn_deg", &o->second_search_after_turn_rad);
+  s.ReadNonNegative("second_search_min_gain", &o->second_search_min_gain);
   ReadCeresScanMatcher(s.Section("ceres_scan_matcher"), &o->ceres_scan_matcher, /*local=*/true);
   {
     YamlSection m = s.Section("motion_filter");

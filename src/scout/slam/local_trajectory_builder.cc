@@ -27,6 +27,13 @@ const LocalSlamOptions& Validated(const LocalSlamOptions& options) {
 void Validate(const LocalSlamOptions& options) {
   CheckLocalOption(options.voxel_filter_size_m > 0.0 && std::isfinite(options.voxel_filter_size_m),
                    "voxel_filter_size_m", options.voxel_filter_size_m, "finite and > 0");
+  CheckLocalOption(
+      options.second_search_after_turn_rad >= 0.0 && options.second_search_after_turn_rad <= M_PI,
+      "second_search_after_turn_deg", options.second_search_after_turn_rad * 180.0 / M_PI,
+      "in [0, 180]");
+  CheckLocalOption(
+      options.second_search_min_gain >= 0.0 && std::isfinite(options.second_search_min_gain),
+      "second_search_min_gain", options.second_search_min_gain, "finite and >= 0");
   // The parts name their keys from their own section ("submaps.resolution_m");
   // the user's options file has them under slam.local.
   try {
@@ -53,8 +60,9 @@ void LocalTrajectoryBuilder::AddOdometry(const sensor::Odometry& odometry) {
   extrapolator_.AddOdometry(odometry);
 }
 
-geometry::Rigid2d LocalTrajectoryBuilder::MatchScan(const geometry::Rigid2d& prediction,
-                                                    const PointCloud& points) {
+geometry::Rigid2d LocalTrajectoryBuilder::MatchScan(
+    const geometry::Rigid2d& prediction, const std::optional<geometry::Rigid2d>& second_prediction,
+    const PointCloud& points) {
   // The older submap has seen the most scans: the best reference.
   const grid::ProbabilityGrid& grid = *active_submaps_.submaps().front()->grid();
   const geometry::Rigid2d to_submap = active_submaps_.submaps().front()->local_pose().inverse();
@@ -67,7 +75,20 @@ geometry::Rigid2d LocalTrajectoryBuilder::MatchScan(const geometry::Rigid2d& pre
   const Eigen::Vector2d* prediction_prior = nullptr;
   if (options_.use_online_correlative_scan_matching) {
     bool on_angular_edge = false;
-    initial = real_time_matcher_.Match(prediction_in_submap, points, grid, &on_angular_edge).pose;
+    ScanMatchResult best =
+        real_time_matcher_.Match(prediction_in_submap, points, grid, &on_angular_edge);
+    if (second_prediction) {
+      ++statistics_.num_second_searches;
+      bool second_on_angular_edge = false;
+      const ScanMatchResult second = real_time_matcher_.Match(
+          to_submap * *second_prediction, points, grid, &second_on_angular_edge);
+      if (second.score > (1.0 + options_.second_search_min_gain) * best.score) {
+        ++statistics_.num_second_search_wins;
+        best = second;
+        on_angular_edge = second_on_angular_edge;
+      }
+    }
+    initial = best.pose;
     statistics_.num_angular_edge_matches += on_angular_edge ? 1 : 0;
     prediction_prior = &predicted_translation;
   }
@@ -104,10 +125,23 @@ std::optional<InsertionResult> LocalTrajectoryBuilder::AddScan(const sensor::Las
   geometry::Rigid2d pose = extrapolator_.ExtrapolatePose(scan.time_s);
   if (!active_submaps_.submaps().empty() && !filtered_points.empty()) {
     const auto start = std::chrono::steady_clock::now();
-    pose = MatchScan(pose, filtered_points);
+    // The pose odometry predicts had the last match not turned its scan:
+    // the same motion since that scan, from its prediction instead of its
+    // match.
+    std::optional<geometry::Rigid2d> second_prediction;
+    if (last_match_ && options_.second_search_after_turn_rad > 0.0 &&
+        std::abs(std::remainder(last_match_->pose.theta() - last_match_->prediction.theta(),
+                                2.0 * M_PI)) > options_.second_search_after_turn_rad) {
+      second_prediction = last_match_->prediction * last_match_->pose.inverse() * pose;
+    }
+    const geometry::Rigid2d prediction = pose;
+    pose = MatchScan(prediction, second_prediction, filtered_points);
+    last_match_ = LastMatch{prediction, pose};
     statistics_.scan_matching_ms +=
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     ++statistics_.num_matched;
+  } else {
+    last_match_.reset();
   }
   extrapolator_.AddPose(scan.time_s, pose);
   last_pose_ = pose;

@@ -269,6 +269,44 @@ TEST(LocalTrajectoryBuilderTest, CountsMatchesOnTheAngularWindowsEdge) {
   EXPECT_GT(from_prediction, 0.1);
 }
 
+// A scan whose data fits the map 18 degrees off its (right) odometry, as a
+// laser that lags a fast turn would give, is matched there. The next scan,
+// taken where odometry says, then starts 18 degrees off; with 5 degrees of
+// odometry error on top its true pose lies beyond the search window. The
+// second search, from where odometry puts it without the last match's turn,
+// finds it.
+TEST(LocalTrajectoryBuilderTest, SecondSearchUndoesTheTurnOfOneSurprisingMatch) {
+  const std::vector<testing::Segment> walls = testing::Room();
+  const Rigid2d truth(-0.4, 0.3, 0.2);
+  const double deg = std::numbers::pi / 180.0;
+  const auto final_heading_error = [&](double second_search_after_turn_rad,
+                                       LocalTrajectoryBuilder::Statistics* statistics) {
+    LocalSlamOptions options;
+    options.second_search_after_turn_rad = second_search_after_turn_rad;
+    LocalTrajectoryBuilder builder(options);
+    builder.AddOdometry({0.0, Rigid2d()});
+    EXPECT_TRUE(builder.AddScan(testing::CastScan(walls, truth, 0.0)).has_value());
+    builder.AddOdometry({0.5, Rigid2d()});
+    const Rigid2d turned(truth.translation(), truth.theta() + 18.0 * deg);
+    builder.AddScan(testing::CastScan(walls, turned, 0.5));
+    EXPECT_NEAR(builder.last_pose().theta(), 18.0 * deg, 1.0 * deg);
+    builder.AddOdometry({1.0, Rigid2d(0.0, 0.0, 5.0 * deg)});  // the robot stood still
+    builder.AddScan(testing::CastScan(walls, truth, 1.0));
+    *statistics = builder.statistics();
+    // Local SLAM's frame starts at the first scan's pose.
+    return std::abs(builder.last_pose().theta());
+  };
+  LocalTrajectoryBuilder::Statistics statistics;
+  EXPECT_LT(final_heading_error(10.0 * deg, &statistics), 0.01);
+  EXPECT_EQ(statistics.num_second_searches, 1);
+  EXPECT_EQ(statistics.num_second_search_wins, 1);
+  EXPECT_GT(final_heading_error(0.0, &statistics), 0.1);
+  EXPECT_EQ(statistics.num_second_searches, 0);
+  // A surprising turn below the threshold searches once.
+  final_heading_error(20.0 * deg, &statistics);
+  EXPECT_EQ(statistics.num_second_searches, 0);
+}
+
 TEST(LocalTrajectoryBuilderTest, ResultCarriesSubmapsAndSkipsUnusableScans) {
   LocalSlamOptions options;
   options.submaps.num_range_data = 2;
@@ -343,6 +381,17 @@ TEST(LocalTrajectoryBuilderTest, RejectsInvalidOptionsNamingThem) {
   options = {};
   options.motion_filter.max_distance_m = -1.0;
   EXPECT_THROW(LocalTrajectoryBuilder{options}, std::invalid_argument);
+  options = {};
+  options.second_search_min_gain = -0.5;
+  try {
+    LocalTrajectoryBuilder builder(options);
+    FAIL() << "expected std::invalid_argument";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(
+        std::string(e.what()).find("slam.local.second_search_min_gain must be finite and >= 0"),
+        std::string::npos)
+        << e.what();
+  }
 }
 
 }  // namespace
