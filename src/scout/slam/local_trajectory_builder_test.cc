@@ -290,7 +290,8 @@ TEST(LocalTrajectoryBuilderTest, SecondSearchUndoesTheTurnOfOneSurprisingMatch) 
     const Rigid2d turned(truth.translation(), truth.theta() + 18.0 * deg);
     builder.AddScan(testing::CastScan(walls, turned, 0.5));
     EXPECT_NEAR(builder.last_pose().theta(), 18.0 * deg, 1.0 * deg);
-    builder.AddOdometry({1.0, Rigid2d(0.0, 0.0, 5.0 * deg)});  // the robot stood still
+    // Odometry claims a turn of 5 degrees; the robot stood still.
+    builder.AddOdometry({1.0, Rigid2d(0.0, 0.0, 5.0 * deg)});
     builder.AddScan(testing::CastScan(walls, truth, 1.0));
     *statistics = builder.statistics();
     // Local SLAM's frame starts at the first scan's pose.
