@@ -354,14 +354,14 @@ int RunReplay(const ReplayArgs& args) {
   summary["slam"]["submap_events"] = stats.num_submap_events;
   summary["slam"]["settings"] = args.explore_slam ? "explore" : "slam";
   {
-    // More than the odd glitch on the window's edge: the odometry's turns are
-    // off by more than the search looks (the eight Radish logs with injected
-    // noise, seeds 1-12: at most one such scan per run; the fr079 bag: none).
     const slam::LocalTrajectoryBuilder::Statistics& local =
         builder.local_trajectory_builder().statistics();
     summary["slam"]["angular_edge_matches"] = local.num_angular_edge_matches;
     summary["slam"]["second_searches"] = local.num_second_searches;
     summary["slam"]["second_search_wins"] = local.num_second_search_wins;
+    // More than the odd glitch on the window's edge: the odometry's turns are
+    // off by more than the search looks (the eight Radish logs with injected
+    // noise, seeds 1-12: at most one such scan per run; the fr079 bag: none).
     if (local.num_angular_edge_matches >= 3 &&
         local.num_angular_edge_matches > 0.01 * local.num_matched) {
       const slam::RealTimeCorrelativeScanMatcherOptions& m =

@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 
@@ -27,10 +28,10 @@ const LocalSlamOptions& Validated(const LocalSlamOptions& options) {
 void Validate(const LocalSlamOptions& options) {
   CheckLocalOption(options.voxel_filter_size_m > 0.0 && std::isfinite(options.voxel_filter_size_m),
                    "voxel_filter_size_m", options.voxel_filter_size_m, "finite and > 0");
-  CheckLocalOption(
-      options.second_search_after_turn_rad >= 0.0 && options.second_search_after_turn_rad <= M_PI,
-      "second_search_after_turn_deg", options.second_search_after_turn_rad * 180.0 / M_PI,
-      "in [0, 180]");
+  CheckLocalOption(options.second_search_after_turn_rad >= 0.0 &&
+                       options.second_search_after_turn_rad <= std::numbers::pi,
+                   "second_search_after_turn_deg",
+                   options.second_search_after_turn_rad * 180.0 / std::numbers::pi, "in [0, 180]");
   CheckLocalOption(
       options.second_search_min_gain >= 0.0 && std::isfinite(options.second_search_min_gain),
       "second_search_min_gain", options.second_search_min_gain, "finite and >= 0");
@@ -131,7 +132,7 @@ std::optional<InsertionResult> LocalTrajectoryBuilder::AddScan(const sensor::Las
     std::optional<geometry::Rigid2d> second_prediction;
     if (last_match_ && options_.second_search_after_turn_rad > 0.0 &&
         std::abs(std::remainder(last_match_->pose.theta() - last_match_->prediction.theta(),
-                                2.0 * M_PI)) > options_.second_search_after_turn_rad) {
+                                2.0 * std::numbers::pi)) > options_.second_search_after_turn_rad) {
       second_prediction = last_match_->prediction * last_match_->pose.inverse() * pose;
     }
     const geometry::Rigid2d prediction = pose;

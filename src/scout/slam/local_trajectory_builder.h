@@ -1,7 +1,7 @@
 #ifndef SCOUT_SLAM_LOCAL_TRAJECTORY_BUILDER_H_
 #define SCOUT_SLAM_LOCAL_TRAJECTORY_BUILDER_H_
 
-#include <cmath>
+#include <numbers>
 #include <optional>
 #include <vector>
 
@@ -56,7 +56,7 @@ struct LocalSlamOptions {
   // (4744) 21 other runs by up to 18 mm, 11 of them worse. Without the gain,
   // near ties flip (10 deg: fr079 seed 1 broke, 9.1 m).
   // Applies only with use_online_correlative_scan_matching. 0 = off.
-  double second_search_after_turn_rad = 15.0 * M_PI / 180.0;
+  double second_search_after_turn_rad = 15.0 * std::numbers::pi / 180.0;
   double second_search_min_gain = 0.05;
   // Priors 1 / 1 instead of Cartographer's 10 / 40: the priors pull toward
   // the correlative result, which is only cell- and step-accurate, and at 10 /
