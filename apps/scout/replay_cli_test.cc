@@ -173,6 +173,13 @@ TEST_F(ReplayCli, MapsTheLoopAccuratelyAndWritesEveryOutput) {
   EXPECT_LT(consistency["estimate_mean_distance_m"].get<double>(), 0.03) << consistency.dump();
   EXPECT_LT(consistency["reference_mean_distance_m"].get<double>(), 0.03) << consistency.dump();
   EXPECT_NE(r.output.find("scan consistency: "), std::string::npos) << r.output;
+  // So do the scans of the lap's end with those of its start.
+  const nlohmann::json& revisits = consistency["revisits"];
+  EXPECT_GT(revisits["scans"].get<int>(), 10) << revisits.dump();
+  EXPECT_LT(revisits["estimate_mean_distance_m"].get<double>(), 0.03) << revisits.dump();
+  EXPECT_LT(revisits["reference_mean_distance_m"].get<double>(), 0.03) << revisits.dump();
+  EXPECT_GT(revisits["estimate_paired_fraction"].get<double>(), 0.8) << revisits.dump();
+  EXPECT_NE(r.output.find("revisit consistency: "), std::string::npos) << r.output;
   EXPECT_GT(s["realtime_factor"].get<double>(), 0.0);
   EXPECT_GT(s["peak_rss_mb"].get<double>(), 0.0);
   const nlohmann::json& exact = s["frontier"]["strategies"]["exact"];
@@ -299,6 +306,13 @@ TEST_F(ReplayCli, ASingleScanHasNoConsistencyFigure) {
   EXPECT_EQ(r.output.find("nan"), std::string::npos) << r.output;
   const nlohmann::json s = nlohmann::json::parse(ReadFile(out / "summary.json"));
   EXPECT_TRUE(s["consistency"]["estimate_mean_distance_m"].is_null()) << s["consistency"].dump();
+  // Nor does it come back anywhere.
+  EXPECT_NE(r.output.find("revisit consistency: - mm, - % of the returns paired, over 0 scans"),
+            std::string::npos)
+      << r.output;
+  const nlohmann::json& revisits = s["consistency"]["revisits"];
+  EXPECT_EQ(revisits["scans"], 0) << revisits.dump();
+  EXPECT_TRUE(revisits["estimate_paired_fraction"].is_null()) << revisits.dump();
 }
 
 TEST_F(ReplayCli, SynchronousModeIsDeterministic) {

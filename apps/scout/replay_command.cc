@@ -30,6 +30,7 @@
 #include "scout/io/odometry_noise.h"
 #include "scout/io/output_directory.h"
 #include "scout/io/replay_reference.h"
+#include "scout/io/revisit_consistency.h"
 #include "scout/io/scan_consistency.h"
 #include "scout/io/slam_summary.h"
 #include "scout/io/trajectory_association.h"
@@ -133,11 +134,13 @@ nlohmann::json ConsistencySummary(const io::Dataset& dataset,
   const io::ScanConsistencyOptions options;
   std::vector<std::vector<Eigen::Vector2d>> points;
   std::vector<geometry::Rigid2d> estimate, reference_poses;
+  std::vector<double> times_s;
   for (size_t i = 0; i < nodes.size(); ++i) {
     const int scan = node_scans[i];
     if (scan < 0 || (reference != nullptr && !reference->poses[scan])) continue;
     points.push_back(sensor::ToRangeData(dataset.scans[scan], range_filter).returns);
     estimate.push_back(nodes[i].pose);
+    times_s.push_back(nodes[i].time_s);
     if (reference != nullptr) reference_poses.push_back(*reference->poses[scan]);
   }
   const io::ScanConsistency of_estimate = io::MeasureScanConsistency(points, estimate, options);
@@ -149,6 +152,29 @@ nlohmann::json ConsistencySummary(const io::Dataset& dataset,
     json["reference_mean_distance_m"] =
         io::MeasureScanConsistency(points, reference_poses, options).mean_distance_m;
   }
+  // Where the run comes back to a place: found by either trajectory, graded
+  // for both on the same pairs.
+  const io::RevisitOptions revisit;
+  std::vector<std::vector<int>> revisits = io::FindRevisits(estimate, times_s, revisit);
+  if (reference != nullptr) {
+    revisits = io::MergeRevisits(revisits, io::FindRevisits(reference_poses, times_s, revisit));
+  }
+  const io::RevisitConsistency again =
+      io::MeasureRevisitConsistency(points, estimate, revisits, options.max_distance_m);
+  nlohmann::json revisits_json = {{"min_separation_s", revisit.min_separation_s},
+                                  {"max_pose_distance_m", revisit.max_distance_m},
+                                  {"max_turn_deg", revisit.max_turn_deg},
+                                  {"max_earlier_scans", revisit.max_earlier_scans},
+                                  {"scans", again.scans},
+                                  {"estimate_mean_distance_m", again.mean_distance_m},
+                                  {"estimate_paired_fraction", again.paired_fraction}};
+  if (reference != nullptr) {
+    const io::RevisitConsistency of_reference =
+        io::MeasureRevisitConsistency(points, reference_poses, revisits, options.max_distance_m);
+    revisits_json["reference_mean_distance_m"] = of_reference.mean_distance_m;
+    revisits_json["reference_paired_fraction"] = of_reference.paired_fraction;
+  }
+  json["revisits"] = revisits_json;
   return json;
 }
 
@@ -492,6 +518,20 @@ int RunReplay(const ReplayArgs& args) {
               << " scans before it";
     if (c.contains("reference_mean_distance_m")) {
       std::cout << " (reference trajectory: " << mm(c["reference_mean_distance_m"]) << " mm)";
+    }
+    std::cout << "\n";
+    const nlohmann::json& r = c["revisits"];
+    const auto percent = [](const nlohmann::json& v) {
+      return FixedOrDash(
+          v.is_number() ? v.get<double>() * 100.0 : std::numeric_limits<double>::quiet_NaN(), 0);
+    };
+    std::cout << "revisit consistency: " << mm(r["estimate_mean_distance_m"]) << " mm, "
+              << percent(r["estimate_paired_fraction"]) << " % of the returns paired, over "
+              << r["scans"].get<int>() << " scans back at a place seen at least "
+              << FormatNumber(r["min_separation_s"].get<double>()) << " s before";
+    if (r.contains("reference_mean_distance_m")) {
+      std::cout << " (reference trajectory: " << mm(r["reference_mean_distance_m"]) << " mm, "
+                << percent(r["reference_paired_fraction"]) << " %)";
     }
     std::cout << "\n";
   }

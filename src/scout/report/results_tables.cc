@@ -200,28 +200,29 @@ void AppendReplay(const std::vector<RunData>& runs, std::ostringstream& out) {
       return text;
     };
     // Millimetres, the reference's own in brackets (runs before it was measured: a dash).
-    const auto consistency = [&]() {
-      const std::optional<double> e = Number(s, "consistency/estimate_mean_distance_m");
+    const auto consistency = [&](const std::string& prefix) {
+      const std::optional<double> e = Number(s, prefix + "estimate_mean_distance_m");
       if (!e) return std::string(kMissing);
       std::string text = Fixed(*e * 1000.0, 1);
-      if (const std::optional<double> r = Number(s, "consistency/reference_mean_distance_m")) {
+      if (const std::optional<double> r = Number(s, prefix + "reference_mean_distance_m")) {
         text += " (" + Fixed(*r * 1000.0, 1) + ")";
       }
       return text;
     };
-    rows.push_back(
-        {run.name, Text(s, "dataset"), Fixed(Number(s, "odom_noise"), 1), Count(Number(s, "scans")),
-         Fixed(Number(s, "data_duration_s"), 0), Fixed(Number(s, "wall_time_s"), 0),
-         Fixed(Number(s, "realtime_factor"), 2), Fixed(Number(s, "peak_rss_mb"), 0),
-         Count(Number(s, "slam/submaps")), Count(Number(s, "slam/loop_closures")),
-         Count(Number(s, "reference/matched_scans")), Fixed(Number(s, "reference/ate_rmse_m"), 3),
-         pair("1s"), pair("10s"), consistency()});
+    rows.push_back({run.name, Text(s, "dataset"), Fixed(Number(s, "odom_noise"), 1),
+                    Count(Number(s, "scans")), Fixed(Number(s, "data_duration_s"), 0),
+                    Fixed(Number(s, "wall_time_s"), 0), Fixed(Number(s, "realtime_factor"), 2),
+                    Fixed(Number(s, "peak_rss_mb"), 0), Count(Number(s, "slam/submaps")),
+                    Count(Number(s, "slam/loop_closures")),
+                    Count(Number(s, "reference/matched_scans")),
+                    Fixed(Number(s, "reference/ate_rmse_m"), 3), pair("1s"), pair("10s"),
+                    consistency("consistency/"), consistency("consistency/revisits/")});
   }
-  AppendTable(
-      {"run", "dataset", "odom noise", "scans", "data s", "wall s", "× real time", "peak RSS MiB",
-       "submaps", "loop closures", "matched scans", "ATE RMSE m", "RPE 1 s m / ° RMSE (mean)",
-       "RPE 10 s m / ° RMSE (mean)", "scan consistency mm (reference)"},
-      rows, out);
+  AppendTable({"run", "dataset", "odom noise", "scans", "data s", "wall s", "× real time",
+               "peak RSS MiB", "submaps", "loop closures", "matched scans", "ATE RMSE m",
+               "RPE 1 s m / ° RMSE (mean)", "RPE 10 s m / ° RMSE (mean)",
+               "scan consistency mm (reference)", "revisit consistency mm (reference)"},
+              rows, out);
   AppendStrategyTable(runs, /*with_epsilon=*/false, out);
 }
 

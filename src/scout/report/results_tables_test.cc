@@ -46,7 +46,9 @@ TEST(ResultsTables, ReplayShowsSlamAccuracyAndCost) {
                   "rpe_1s_rot_deg": 0.41, "rpe_10s_trans_m": 0.0734, "rpe_10s_rot_deg": 1.27,
                   "rpe_1s_trans_mean_m": 0.0101, "rpe_1s_rot_mean_deg": 0.33,
                   "rpe_10s_trans_mean_m": 0.0612, "rpe_10s_rot_mean_deg": 0.98},
-    "consistency": {"estimate_mean_distance_m": 0.01224, "reference_mean_distance_m": 0.01629},
+    "consistency": {"estimate_mean_distance_m": 0.01224, "reference_mean_distance_m": 0.01629,
+                    "revisits": {"scans": 40, "estimate_mean_distance_m": 0.02987,
+                                 "reference_mean_distance_m": 0.02861}},
     "frontier": {"strategies": {"exact": {"queried_points": 12345, "time_ms": 90.0,
       "accuracy": 1.0, "precision": 1.0, "recall": 1.0, "P": 0.8766, "fp": 0, "fn": 0}}}})");
   WriteTextFileAtomically(dir / "command.txt", "scout replay intel.log.gz --odom-noise 1\n");
@@ -55,7 +57,7 @@ TEST(ResultsTables, ReplayShowsSlamAccuracyAndCost) {
   EXPECT_TRUE(Contains(md,
                        "| tables_replay | intel-corrected | 1.0 | 910 | 1200 | 60 | 19.94 | "
                        "313 | 14 | 52 | 905 | 0.081 | 0.012 / 0.41 (0.010 / 0.33) | "
-                       "0.073 / 1.27 (0.061 / 0.98) | 12.2 (16.3) |"))
+                       "0.073 / 1.27 (0.061 / 0.98) | 12.2 (16.3) | 29.9 (28.6) |"))
       << md;
   // No frontier.csv: the rounds come from the SLAM optimisations.
   EXPECT_TRUE(Contains(md,
@@ -191,6 +193,8 @@ TEST(ResultsTables, SummaryValueOfTheWrongTypeNamesTheFileAndKey) {
       {R"({"frontier": {"strategies": {"exact": {"P": "x"}}}})",
        "key 'frontier/strategies/exact/P' is \"x\", expected a number"},
       {R"({"reference": {"ate_rmse_m": [1]}})", "key 'reference/ate_rmse_m' is [1]"},
+      {R"({"consistency": {"revisits": {"scans": "many"}}})",
+       "key 'consistency/revisits/scans' is \"many\", expected a number"},
       {R"({"scans": -5})", "key 'scans' is -5, expected a number >= 0"},
       {R"({"scans": 1e999})", "not valid JSON"},
       {R"({"dataset": "intel", "scans": 3})",

@@ -66,7 +66,12 @@ constexpr const char* kSummaryNumbers[] = {"seed",
                                            "reference/rpe_1s_rot_mean_deg",
                                            "reference/rpe_10s_trans_mean_m",
                                            "reference/rpe_10s_rot_mean_deg",
-                                           "consistency/*",
+                                           "consistency/previous_scans",
+                                           "consistency/max_distance_m",
+                                           "consistency/scans",
+                                           "consistency/estimate_mean_distance_m",
+                                           "consistency/reference_mean_distance_m",
+                                           "consistency/revisits/*",
                                            "frontier/strategies/*/*"};
 
 // A value as it stands in the file, cut short: a message must not print
