@@ -135,6 +135,15 @@ void ExpectLoopClosureLogMatches(const fs::path& csv, const nlohmann::json& slam
   EXPECT_EQ(outcomes["accepted"], slam["loop_closures"].get<int>());
   EXPECT_EQ(outcomes["gated"], slam["gated_loop_closures"].get<int>());
   EXPECT_EQ(outcomes["dropped"], slam["rejected_loop_closures"].get<int>());
+  // Every search ends one way: no match, ambiguous, gated, ambiguous in a wide window,
+  // seeing through walls, or found (then kept or dropped).
+  EXPECT_EQ(slam["loop_closure_searches"].get<int>(),
+            slam["searches_without_match"].get<int>() + slam["ambiguous_matches"].get<int>() +
+                slam["gated_loop_closures"].get<int>() + slam["wide_ambiguous_matches"].get<int>() +
+                slam["matches_seeing_through"].get<int>() + slam["loop_closures"].get<int>() +
+                slam["rejected_loop_closures"].get<int>())
+      << slam.dump();
+  EXPECT_GT(slam["searches_without_match"].get<int>(), 0) << slam.dump();
 }
 
 TEST_F(ReplayCli, MapsTheLoopAccuratelyAndWritesEveryOutput) {
@@ -151,6 +160,12 @@ TEST_F(ReplayCli, MapsTheLoopAccuratelyAndWritesEveryOutput) {
   }
   const nlohmann::json s = nlohmann::json::parse(ReadFile(out / "summary.json"));
   ExpectLoopClosureLogMatches(out / "loop_closures.csv", s["slam"]);
+  EXPECT_NE(r.output.find("loop-closure searches: " +
+                          std::to_string(s["slam"]["loop_closure_searches"].get<int>()) + " (" +
+                          std::to_string(s["slam"]["searches_without_match"].get<int>()) +
+                          " below the minimum score, "),
+            std::string::npos)
+      << r.output;
   EXPECT_EQ(s["format"], "carmen");
   EXPECT_TRUE(s["interrupted_by"].is_null());
   EXPECT_EQ(s["scans"], s["dataset_scans"]);

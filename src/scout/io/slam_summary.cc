@@ -10,6 +10,11 @@ nlohmann::json SlamSummary(const slam::SlamStats& stats, bool synchronous) {
           {"rejected_loop_closures", stats.num_rejected_loop_closures},
           {"gated_loop_closures", stats.num_gated_loop_closures},
           {"loop_closure_searches", stats.num_loop_closure_searches},
+          {"searches_without_match", stats.num_searches_without_match},
+          {"ambiguous_matches", stats.num_ambiguous_matches},
+          {"wide_ambiguous_matches", stats.num_wide_ambiguous_matches},
+          {"matches_seeing_through", stats.num_matches_seeing_through},
+          {"pairs_without_overlap", stats.num_pairs_without_overlap},
           {"solve_time_s", stats.total_solve_time_s},
           {"synchronous", synchronous}};
 }

@@ -239,10 +239,14 @@ std::optional<Constraint> ConstraintBuilder::Search(int submap_id, int node_id,
                                 " was not added as finished");
   }
   ++num_searches_;
+  bool ambiguous = false;
   const std::optional<ScanMatchResult> match =
       it->second.matcher->Match(initial_relative_pose, points, it->second.min_score,
-                                SearchWindow(travel_m), AngularSearchWindow(travel_m));
-  if (!match) return std::nullopt;
+                                SearchWindow(travel_m), AngularSearchWindow(travel_m), &ambiguous);
+  if (!match) {
+    ++(ambiguous ? num_ambiguous_ : num_without_match_);
+    return std::nullopt;
+  }
   // A match far from the estimate may be a copy of the place (the hall next
   // door): search again around the match, far enough to reach back past the
   // estimate, and keep the match only if it is still the one best answer.

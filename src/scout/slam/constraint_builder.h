@@ -202,10 +202,15 @@ class ConstraintBuilder {
   double AngularSearchWindow(double travel_m) const;
 
   // Pairs searched, loop closures found, pairs skipped for lack of overlap,
-  // matches rejected by the free-space check, by the wide ambiguity test and
-  // by the innovation gate, so far.
+  // searches without a match above the minimum score, ambiguous matches (a
+  // pose ambiguity_radius_m or more away scores within the margin), matches
+  // rejected by the free-space check, by the wide ambiguity test and by the
+  // innovation gate, so far. Every search ends in exactly one of: without a
+  // match, ambiguous, gated, wide ambiguous, seeing through, found.
   int num_searches() const { return num_searches_; }
   int num_constraints_found() const { return num_found_; }
+  int num_without_match() const { return num_without_match_; }
+  int num_ambiguous() const { return num_ambiguous_; }
   int num_without_overlap() const { return num_without_overlap_; }
   int num_seeing_through() const { return num_seeing_through_; }
   int num_wide_ambiguous() const { return num_wide_ambiguous_; }
@@ -225,7 +230,9 @@ class ConstraintBuilder {
   std::map<int, SubmapMatcher> submaps_;
   std::atomic<int> num_searches_ = 0;  // counted by concurrent searches
   std::atomic<int> num_found_ = 0;
-  int num_without_overlap_ = 0;
+  std::atomic<int> num_without_overlap_ = 0;  // read by stats while searches run
+  std::atomic<int> num_without_match_ = 0;
+  std::atomic<int> num_ambiguous_ = 0;
   std::atomic<int> num_seeing_through_ = 0;
   std::atomic<int> num_wide_ambiguous_ = 0;
   std::atomic<int> num_gated_ = 0;

@@ -74,6 +74,9 @@ TEST(ConstraintBuilderTest, RejectsAScanOfAnotherPlace) {
           .has_value());
   EXPECT_EQ(builder.num_searches(), 1);
   EXPECT_EQ(builder.num_constraints_found(), 0);
+  // Nothing scored above the minimum: no match, rather than an ambiguous one.
+  EXPECT_EQ(builder.num_without_match(), 1);
+  EXPECT_EQ(builder.num_ambiguous(), 0);
 }
 
 TEST(ConstraintBuilderTest, SamplesAFixedRatioOfNearbyPairsPerSubmap) {

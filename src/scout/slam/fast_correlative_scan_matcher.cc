@@ -201,9 +201,9 @@ std::optional<ScanMatchResult> FastCorrelativeScanMatcher::Match(
 
 std::optional<ScanMatchResult> FastCorrelativeScanMatcher::Match(
     const geometry::Rigid2d& initial_pose_estimate, const PointCloud& points, double min_score,
-    double linear_window_m, double angular_window_rad) const {
+    double linear_window_m, double angular_window_rad, bool* ambiguous) const {
   return Search(initial_pose_estimate, points, linear_window_m, angular_window_rad, min_score,
-                /*check_ambiguity=*/true);
+                /*check_ambiguity=*/true, ambiguous);
 }
 
 std::optional<ScanMatchResult> FastCorrelativeScanMatcher::MatchFullSubmap(const PointCloud& points,
@@ -218,8 +218,8 @@ std::optional<ScanMatchResult> FastCorrelativeScanMatcher::MatchFullSubmap(const
 
 std::optional<ScanMatchResult> FastCorrelativeScanMatcher::Search(
     const geometry::Rigid2d& initial_pose_estimate, const PointCloud& points,
-    double linear_window_m, double angular_window_rad, double min_score,
-    bool check_ambiguity) const {
+    double linear_window_m, double angular_window_rad, double min_score, bool check_ambiguity,
+    bool* ambiguous) const {
   if (points.empty()) return std::nullopt;
   const double resolution = limits_.resolution();
   double max_range_m = 0.0;
@@ -338,6 +338,7 @@ std::optional<ScanMatchResult> FastCorrelativeScanMatcher::Search(
     const double best_score = ScoreOfSum(best->sum, points.size());
     const Exclusion around_best{best->x, best->y, options_.ambiguity_radius_m / resolution};
     if (best_candidate(min_sum_for(best_score - options_.ambiguity_score_margin), around_best)) {
+      if (ambiguous != nullptr) *ambiguous = true;
       return std::nullopt;  // a distant pose fits about as well: ambiguous
     }
   }

@@ -66,10 +66,12 @@ class FastCorrelativeScanMatcher {
   // or if the match is ambiguous (see FastCorrelativeScanMatcherOptions).
   std::optional<ScanMatchResult> Match(const geometry::Rigid2d& initial_pose_estimate,
                                        const PointCloud& points, double min_score) const;
-  // As Match with the windows given instead of the options'.
+  // As Match with the windows given instead of the options'. With
+  // 'ambiguous', an ambiguous match (nullopt) sets it to true.
   std::optional<ScanMatchResult> Match(const geometry::Rigid2d& initial_pose_estimate,
                                        const PointCloud& points, double min_score,
-                                       double linear_window_m, double angular_window_rad) const;
+                                       double linear_window_m, double angular_window_rad,
+                                       bool* ambiguous = nullptr) const;
 
   // As Match, but searching every rotation and every translation that keeps
   // the grid's centre within the window centred on it (global localisation).
@@ -110,7 +112,7 @@ class FastCorrelativeScanMatcher {
   std::optional<ScanMatchResult> Search(const geometry::Rigid2d& initial_pose_estimate,
                                         const PointCloud& points, double linear_window_m,
                                         double angular_window_rad, double min_score,
-                                        bool check_ambiguity) const;
+                                        bool check_ambiguity, bool* ambiguous = nullptr) const;
 
   FastCorrelativeScanMatcherOptions options_;
   grid::MapLimits limits_;

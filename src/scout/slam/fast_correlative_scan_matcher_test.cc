@@ -151,9 +151,25 @@ TEST(FastCorrelativeScanMatcherTest, RejectsAmbiguousMatchesWhenAskedTo) {
   options.ambiguity_radius_m = 0.3;
   options.ambiguity_score_margin = 0.05;
   EXPECT_FALSE(FastCorrelativeScanMatcher(grid, options).Match(truth, points, 0.55).has_value());
+  // The caller can tell that from no match at all (the loop-closure counts).
+  const FastCorrelativeScanMatcher matcher(grid, options);
+  bool ambiguous = false;
+  EXPECT_FALSE(matcher
+                   .Match(truth, points, 0.55, options.linear_search_window_m,
+                          options.angular_search_window_rad, &ambiguous)
+                   .has_value());
+  EXPECT_TRUE(ambiguous);
+  bool unmatched_ambiguous = false;
+  EXPECT_FALSE(matcher
+                   .Match(truth, points, 0.99, options.linear_search_window_m,
+                          options.angular_search_window_rad, &unmatched_ambiguous)
+                   .has_value());
+  EXPECT_FALSE(unmatched_ambiguous);  // nothing scores 0.99: no match, not ambiguous
   // A window too small to reach the other room leaves nothing to confuse.
+  bool near_ambiguous = false;
   const std::optional<ScanMatchResult> near =
-      FastCorrelativeScanMatcher(grid, options).Match(truth, points, 0.55, 1.0, 0.5);
+      matcher.Match(truth, points, 0.55, 1.0, 0.5, &near_ambiguous);
+  EXPECT_FALSE(near_ambiguous);
   ASSERT_TRUE(near.has_value());
   EXPECT_LT((near->pose.translation() - truth.translation()).norm(), 0.06) << near->pose;
 }

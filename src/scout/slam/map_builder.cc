@@ -112,6 +112,11 @@ SlamStats MapBuilder::GetStats() const {
   stats.num_rejected_loop_closures = graph.num_rejected_loop_closures;
   stats.num_gated_loop_closures = graph.num_gated_loop_closures;
   stats.num_loop_closure_searches = graph.num_searches;
+  stats.num_searches_without_match = graph.num_searches_without_match;
+  stats.num_ambiguous_matches = graph.num_ambiguous_matches;
+  stats.num_wide_ambiguous_matches = graph.num_wide_ambiguous_matches;
+  stats.num_matches_seeing_through = graph.num_matches_seeing_through;
+  stats.num_pairs_without_overlap = graph.num_pairs_without_overlap;
   stats.total_solve_time_s = graph.total_solve_time_s;
   stats.num_scans = num_scans_;
   stats.num_submap_events = num_submap_events_;

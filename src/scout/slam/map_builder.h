@@ -39,6 +39,13 @@ struct SlamStats {
   int num_rejected_loop_closures = 0;  // found, then dropped as outliers by a solve
   int num_gated_loop_closures = 0;     // matches too far from the estimate (PoseGraphStats)
   int num_loop_closure_searches = 0;
+  // How the searches that found nothing ended, and the pairs not searched
+  // for lack of overlap (PoseGraphStats).
+  int num_searches_without_match = 0;
+  int num_ambiguous_matches = 0;
+  int num_wide_ambiguous_matches = 0;
+  int num_matches_seeing_through = 0;
+  int num_pairs_without_overlap = 0;
   double total_solve_time_s = 0.0;
   int num_scans = 0;  // scans given to AddScan
   int num_submap_events = 0;

@@ -538,8 +538,13 @@ geometry::Rigid2d PoseGraph::GetLocalToGlobal() const {
 PoseGraphStats PoseGraph::GetStats() const {
   std::lock_guard<std::mutex> lock(mutex_);
   PoseGraphStats stats = stats_;
-  // An atomic counter: safe to read while a queued step searches.
+  // Atomic counters: safe to read while a queued step searches.
   stats.num_gated_loop_closures = constraint_builder_.num_gated();
+  stats.num_searches_without_match = constraint_builder_.num_without_match();
+  stats.num_ambiguous_matches = constraint_builder_.num_ambiguous();
+  stats.num_wide_ambiguous_matches = constraint_builder_.num_wide_ambiguous();
+  stats.num_matches_seeing_through = constraint_builder_.num_seeing_through();
+  stats.num_pairs_without_overlap = constraint_builder_.num_without_overlap();
   return stats;
 }
 

@@ -121,6 +121,16 @@ struct PoseGraphStats {
   // Matches rejected by gate_loop_closures_by_chain. The gate comes first,
   // so this counts some the wide ambiguity or see-through tests would reject.
   int num_gated_loop_closures = 0;
+  // Why the other searches found nothing (ConstraintBuilder's counters): no
+  // match above the minimum score, a rival as good elsewhere in the window,
+  // a match that is not the one best in a wide window, rays through known
+  // walls; and the pairs not searched because too little of the scan fell on
+  // the submap.
+  int num_searches_without_match = 0;
+  int num_ambiguous_matches = 0;
+  int num_wide_ambiguous_matches = 0;
+  int num_matches_seeing_through = 0;
+  int num_pairs_without_overlap = 0;
   double total_solve_time_s = 0.0;
   double last_solve_time_s = 0.0;
 };

@@ -257,6 +257,14 @@ TEST(PoseGraphTest, MatchesFartherFromTheEstimateThanTheChainAllowsAreGated) {
   EXPECT_EQ(CountOutcome(outlier_rounds, LoopClosureOutcome::kAccepted),
             outlier_rounds.stats.num_loop_closures);
   EXPECT_EQ(CountOutcome(outlier_rounds, LoopClosureOutcome::kGated), 0);
+  // Every search ends one way, gated or not.
+  for (const Outcome* out : {&gated, &outlier_rounds, &neither}) {
+    const PoseGraphStats& st = out->stats;
+    EXPECT_EQ(st.num_searches, st.num_searches_without_match + st.num_ambiguous_matches +
+                                   st.num_gated_loop_closures + st.num_wide_ambiguous_matches +
+                                   st.num_matches_seeing_through + st.num_loop_closures +
+                                   st.num_rejected_loop_closures);
+  }
 }
 
 TEST(PoseGraphTest, ExactLocalSlamStaysExact) {
