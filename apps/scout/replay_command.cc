@@ -159,20 +159,20 @@ nlohmann::json ConsistencySummary(const io::Dataset& dataset,
   if (reference != nullptr) {
     revisits = io::MergeRevisits(revisits, io::FindRevisits(reference_poses, times_s, revisit));
   }
-  const io::RevisitConsistency again =
+  const io::RevisitConsistency estimate_revisits =
       io::MeasureRevisitConsistency(points, estimate, revisits, options.max_distance_m);
   nlohmann::json revisits_json = {{"min_separation_s", revisit.min_separation_s},
                                   {"max_pose_distance_m", revisit.max_distance_m},
                                   {"max_turn_deg", revisit.max_turn_deg},
                                   {"max_earlier_scans", revisit.max_earlier_scans},
-                                  {"scans", again.scans},
-                                  {"estimate_mean_distance_m", again.mean_distance_m},
-                                  {"estimate_paired_fraction", again.paired_fraction}};
+                                  {"scans", estimate_revisits.scans},
+                                  {"estimate_mean_distance_m", estimate_revisits.mean_distance_m},
+                                  {"estimate_paired_fraction", estimate_revisits.paired_fraction}};
   if (reference != nullptr) {
-    const io::RevisitConsistency of_reference =
+    const io::RevisitConsistency reference_revisits =
         io::MeasureRevisitConsistency(points, reference_poses, revisits, options.max_distance_m);
-    revisits_json["reference_mean_distance_m"] = of_reference.mean_distance_m;
-    revisits_json["reference_paired_fraction"] = of_reference.paired_fraction;
+    revisits_json["reference_mean_distance_m"] = reference_revisits.mean_distance_m;
+    revisits_json["reference_paired_fraction"] = reference_revisits.paired_fraction;
   }
   json["revisits"] = revisits_json;
   return json;

@@ -101,15 +101,16 @@ RevisitConsistency MeasureRevisitConsistency(
           std::to_string(points.size()) + " scans, " + std::to_string(poses.size()) +
               " poses and " + std::to_string(revisits.size()) + " revisit lists");
   Require(max_distance_m > 0.0, "max_distance_m must be > 0");
-  const auto world = [&](size_t scan) {
-    std::vector<BgPoint> placed;
-    placed.reserve(points[scan].size());
-    for (const Eigen::Vector2d& p : points[scan]) {
-      const Eigen::Vector2d w = poses[scan] * p;
-      placed.emplace_back(w.x(), w.y());
+  // Each scan's returns in the world frame, placed once: a scan is the
+  // earlier visit of up to max_earlier_scans later ones.
+  std::vector<std::vector<BgPoint>> world(points.size());
+  for (size_t i = 0; i < points.size(); ++i) {
+    world[i].reserve(points[i].size());
+    for (const Eigen::Vector2d& p : points[i]) {
+      const Eigen::Vector2d w = poses[i] * p;
+      world[i].emplace_back(w.x(), w.y());
     }
-    return placed;
-  };
+  }
   const double max_distance_sq = max_distance_m * max_distance_m;
   RevisitConsistency result;
   double sum_of_means = 0.0;
@@ -121,8 +122,7 @@ RevisitConsistency MeasureRevisitConsistency(
       Require(j >= 0 && static_cast<size_t>(j) < points.size(),
               "scan " + std::to_string(i) + " revisits scan " + std::to_string(j) +
                   ", which does not exist");
-      const std::vector<BgPoint> placed = world(j);
-      earlier.insert(earlier.end(), placed.begin(), placed.end());
+      earlier.insert(earlier.end(), world[j].begin(), world[j].end());
     }
     ++result.scans;
     returns += static_cast<int64_t>(points[i].size());
@@ -130,7 +130,7 @@ RevisitConsistency MeasureRevisitConsistency(
     const bgi::rtree<BgPoint, bgi::rstar<16>> tree(earlier);  // packed: built in one go
     double sum = 0.0;
     int pairs = 0;
-    for (const BgPoint& q : world(i)) {
+    for (const BgPoint& q : world[i]) {
       for (auto it = tree.qbegin(bgi::nearest(q, 1)); it != tree.qend(); ++it) {
         const double d_sq = bg::comparable_distance(q, *it);
         if (d_sq <= max_distance_sq) {
