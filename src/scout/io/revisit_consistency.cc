@@ -1,8 +1,6 @@
 #include "scout/io/revisit_consistency.h"
 
 #include <algorithm>
-#include <boost/geometry.hpp>
-#include <boost/geometry/index/rtree.hpp>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -12,13 +10,10 @@
 #include <utility>
 
 #include "scout/geometry/rigid_transform.h"
+#include "scout/io/scan_pairing.h"
 
 namespace scout::io {
 namespace {
-
-namespace bg = boost::geometry;
-namespace bgi = boost::geometry::index;
-using BgPoint = bg::model::point<double, 2, bg::cs::cartesian>;
 
 void Require(bool ok, const std::string& what) {
   if (!ok) throw std::invalid_argument("revisit consistency: " + what);
@@ -103,45 +98,26 @@ RevisitConsistency MeasureRevisitConsistency(
   Require(max_distance_m > 0.0, "max_distance_m must be > 0");
   // Each scan's returns in the world frame, placed once: a scan is the
   // earlier visit of up to max_earlier_scans later ones.
-  std::vector<std::vector<BgPoint>> world(points.size());
-  for (size_t i = 0; i < points.size(); ++i) {
-    world[i].reserve(points[i].size());
-    for (const Eigen::Vector2d& p : points[i]) {
-      const Eigen::Vector2d w = poses[i] * p;
-      world[i].emplace_back(w.x(), w.y());
-    }
-  }
-  const double max_distance_sq = max_distance_m * max_distance_m;
+  const std::vector<std::vector<Eigen::Vector2d>> world = PlaceScans(points, poses);
   RevisitConsistency result;
   double sum_of_means = 0.0;
   int64_t returns = 0, paired = 0, scans_with_pairs = 0;
+  std::vector<size_t> earlier;
   for (size_t i = 0; i < revisits.size(); ++i) {
     if (revisits[i].empty()) continue;
-    std::vector<BgPoint> earlier;
+    earlier.clear();
     for (const int j : revisits[i]) {
       Require(j >= 0 && static_cast<size_t>(j) < points.size(),
               "scan " + std::to_string(i) + " revisits scan " + std::to_string(j) +
                   ", which does not exist");
-      earlier.insert(earlier.end(), world[j].begin(), world[j].end());
+      earlier.push_back(static_cast<size_t>(j));
     }
     ++result.scans;
     returns += static_cast<int64_t>(points[i].size());
-    if (earlier.empty()) continue;
-    const bgi::rtree<BgPoint, bgi::rstar<16>> tree(earlier);  // packed: built in one go
-    double sum = 0.0;
-    int pairs = 0;
-    for (const BgPoint& q : world[i]) {
-      for (auto it = tree.qbegin(bgi::nearest(q, 1)); it != tree.qend(); ++it) {
-        const double d_sq = bg::comparable_distance(q, *it);
-        if (d_sq <= max_distance_sq) {
-          sum += std::sqrt(d_sq);
-          ++pairs;
-        }
-      }
-    }
-    paired += pairs;
-    if (pairs == 0) continue;
-    sum_of_means += sum / pairs;
+    const ScanPairing pairing = PairWithNearest(world, earlier, i, max_distance_m);
+    paired += pairing.pairs;
+    if (pairing.pairs == 0) continue;
+    sum_of_means += pairing.sum_m / pairing.pairs;
     ++scans_with_pairs;
   }
   constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
