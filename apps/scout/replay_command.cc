@@ -159,21 +159,20 @@ nlohmann::json ConsistencySummary(const io::Dataset& dataset,
   if (reference != nullptr) {
     revisits = io::MergeRevisits(revisits, io::FindRevisits(reference_poses, times_s, revisit));
   }
-  const io::RevisitConsistency estimate_revisits =
-      io::MeasureRevisitConsistency(points, estimate, revisits, options.max_distance_m);
   nlohmann::json revisits_json = {{"min_separation_s", revisit.min_separation_s},
                                   {"max_pose_distance_m", revisit.max_distance_m},
                                   {"max_turn_deg", revisit.max_turn_deg},
-                                  {"max_earlier_scans", revisit.max_earlier_scans},
-                                  {"scans", estimate_revisits.scans},
-                                  {"estimate_mean_distance_m", estimate_revisits.mean_distance_m},
-                                  {"estimate_paired_fraction", estimate_revisits.paired_fraction}};
-  if (reference != nullptr) {
-    const io::RevisitConsistency reference_revisits =
-        io::MeasureRevisitConsistency(points, reference_poses, revisits, options.max_distance_m);
-    revisits_json["reference_mean_distance_m"] = reference_revisits.mean_distance_m;
-    revisits_json["reference_paired_fraction"] = reference_revisits.paired_fraction;
-  }
+                                  {"max_earlier_scans", revisit.max_earlier_scans}};
+  // The same figures for either trajectory, under its prefix.
+  const auto grade = [&](const std::vector<geometry::Rigid2d>& poses, const std::string& prefix) {
+    const io::RevisitConsistency c =
+        io::MeasureRevisitConsistency(points, poses, revisits, options.max_distance_m);
+    revisits_json["scans"] = c.scans;
+    revisits_json[prefix + "_mean_distance_m"] = c.mean_distance_m;
+    revisits_json[prefix + "_paired_fraction"] = c.paired_fraction;
+  };
+  grade(estimate, "estimate");
+  if (reference != nullptr) grade(reference_poses, "reference");
   json["revisits"] = revisits_json;
   return json;
 }

@@ -35,12 +35,14 @@ std::vector<std::vector<int>> FindRevisits(const std::vector<geometry::Rigid2d>&
   // museum replay has tens of thousands).
   const double cell_m = options.max_distance_m;
   const auto key = [&](int64_t cx, int64_t cy) { return (cx << 32) ^ (cy & 0xffffffff); };
+  const auto cell_of = [&](const Eigen::Vector2d& p) {
+    return std::pair<int64_t, int64_t>(static_cast<int64_t>(std::floor(p.x() / cell_m)),
+                                       static_cast<int64_t>(std::floor(p.y() / cell_m)));
+  };
   std::unordered_map<int64_t, std::vector<int>> cells;
   for (size_t i = 0; i < poses.size(); ++i) {
-    const Eigen::Vector2d& p = poses[i].translation();
-    cells[key(static_cast<int64_t>(std::floor(p.x() / cell_m)),
-              static_cast<int64_t>(std::floor(p.y() / cell_m)))]
-        .push_back(static_cast<int>(i));
+    const auto [cx, cy] = cell_of(poses[i].translation());
+    cells[key(cx, cy)].push_back(static_cast<int>(i));
   }
   const double max_turn_rad = options.max_turn_deg * std::numbers::pi / 180.0;
   const double max_distance_sq = options.max_distance_m * options.max_distance_m;
@@ -48,8 +50,7 @@ std::vector<std::vector<int>> FindRevisits(const std::vector<geometry::Rigid2d>&
   std::vector<std::pair<double, int>> found;
   for (size_t i = 0; i < poses.size(); ++i) {
     const Eigen::Vector2d& p = poses[i].translation();
-    const int64_t cx = static_cast<int64_t>(std::floor(p.x() / cell_m));
-    const int64_t cy = static_cast<int64_t>(std::floor(p.y() / cell_m));
+    const auto [cx, cy] = cell_of(p);
     found.clear();
     for (int64_t dx = -1; dx <= 1; ++dx) {
       for (int64_t dy = -1; dy <= 1; ++dy) {
