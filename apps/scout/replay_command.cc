@@ -497,9 +497,10 @@ int RunReplay(const ReplayArgs& args) {
             << stats.num_ambiguous_matches << " ambiguous, " << stats.num_gated_loop_closures
             << " gated, " << stats.num_wide_ambiguous_matches << " ambiguous in a wide window, "
             << stats.num_matches_seeing_through << " seeing through walls, "
-            << stats.num_loop_closures + stats.num_rejected_loop_closures << " found, "
-            << stats.num_rejected_loop_closures << " of them dropped as outliers); "
-            << stats.num_pairs_without_overlap << " pairs not searched for lack of overlap\n";
+            << stats.num_loop_closures + stats.num_rejected_loop_closures << " found ("
+            << stats.num_near_matches << " near matches), " << stats.num_rejected_loop_closures
+            << " of them dropped as outliers); " << stats.num_pairs_without_overlap
+            << " pairs not searched for lack of overlap\n";
   if (reference) {
     const nlohmann::json& r = summary["reference"];
     // Not measured (too few matched nodes for a pair that far apart) prints as a dash.

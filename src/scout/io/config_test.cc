@@ -96,6 +96,8 @@ TEST_F(ConfigTest, SlamSectionOfTheDefaultFileMatchesTheBuiltInDefaults) {
   EXPECT_DOUBLE_EQ(cb.min_angular_search_window_deg, db.min_angular_search_window_deg);
   EXPECT_DOUBLE_EQ(cb.angular_search_window_deg_per_m, db.angular_search_window_deg_per_m);
   EXPECT_EQ(cb.min_num_points, db.min_num_points);
+  EXPECT_DOUBLE_EQ(cb.near_match_max_innovation_m, db.near_match_max_innovation_m);
+  EXPECT_DOUBLE_EQ(cb.near_match_min_score_fraction, db.near_match_min_score_fraction);
   EXPECT_DOUBLE_EQ(c.pose_graph.outlier_translation_m, d.pose_graph.outlier_translation_m);
   EXPECT_DOUBLE_EQ(c.pose_graph.outlier_rotation_deg, d.pose_graph.outlier_rotation_deg);
   EXPECT_EQ(c.pose_graph.max_outlier_rounds, d.pose_graph.max_outlier_rounds);
@@ -130,7 +132,15 @@ TEST_F(ConfigTest, SlamValuesOverrideDefaultsAndErrorsNameTheKey) {
           Write("slam:\n  pose_graph:\n    constraint_builder:\n      sampling_phase: 0.4\n"))
           .slam.pose_graph.constraint_builder.sampling_phase,
       0.4);
-  std::string e = ErrorOf("slam:\n  pose_graph:\n    constraint_builder:\n      min_scor: 0.6\n");
+  const ScoutConfig near = LoadConfig(
+      Write("slam:\n  pose_graph:\n    constraint_builder:\n      near_match_max_innovation_m: 0\n"
+            "      near_match_min_score_fraction: 0.9\n"));
+  EXPECT_EQ(near.slam.pose_graph.constraint_builder.near_match_max_innovation_m, 0.0);
+  EXPECT_DOUBLE_EQ(near.slam.pose_graph.constraint_builder.near_match_min_score_fraction, 0.9);
+  std::string e = ErrorOf(
+      "slam:\n  pose_graph:\n    constraint_builder:\n      near_match_min_score_fraction: 1.5\n");
+  EXPECT_NE(e.find("near_match_min_score_fraction"), std::string::npos) << e;
+  e = ErrorOf("slam:\n  pose_graph:\n    constraint_builder:\n      min_scor: 0.6\n");
   EXPECT_NE(e.find("slam.pose_graph.constraint_builder.min_scor"), std::string::npos) << e;
   // Out-of-range values caught by the module's own validation still name the file.
   e = ErrorOf("slam:\n  local:\n    submaps:\n      hit_probability: 0.4\n");

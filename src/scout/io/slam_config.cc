@@ -132,6 +132,8 @@ void ReadPoseGraph(YamlSection s, slam::PoseGraphOptions* o) {
     c.ReadNonNegative("wide_ambiguity_min_innovation_m", &b.wide_ambiguity_min_innovation_m);
     c.ReadPositive("wide_ambiguity_window_factor", &b.wide_ambiguity_window_factor);
     c.ReadPositive("wide_ambiguity_max_window_m", &b.wide_ambiguity_max_window_m);
+    c.ReadNonNegative("near_match_max_innovation_m", &b.near_match_max_innovation_m);
+    c.ReadNonNegative("near_match_min_score_fraction", &b.near_match_min_score_fraction);
     c.ReadNonNegative("min_search_window_m", &b.min_search_window_m);
     c.ReadNonNegative("search_window_per_travel", &b.search_window_per_travel);
     c.ReadNonNegative("min_angular_search_window_deg", &b.min_angular_search_window_deg);

@@ -15,6 +15,7 @@ nlohmann::json SlamSummary(const slam::SlamStats& stats, bool synchronous) {
           {"wide_ambiguous_matches", stats.num_wide_ambiguous_matches},
           {"matches_seeing_through", stats.num_matches_seeing_through},
           {"pairs_without_overlap", stats.num_pairs_without_overlap},
+          {"near_matches", stats.num_near_matches},
           {"solve_time_s", stats.total_solve_time_s},
           {"synchronous", synchronous}};
 }

@@ -21,6 +21,7 @@ TEST(SlamSummaryTest, EachCounterLandsUnderItsOwnKey) {
   stats.num_matches_seeing_through = 12;
   stats.num_pairs_without_overlap = 13;
   stats.num_ambiguous_matches = 14;
+  stats.num_near_matches = 15;
   const nlohmann::json s = SlamSummary(stats, true);
   EXPECT_EQ(s["nodes"], 1);
   EXPECT_EQ(s["submaps"], 2);
@@ -35,9 +36,10 @@ TEST(SlamSummaryTest, EachCounterLandsUnderItsOwnKey) {
   EXPECT_EQ(s["matches_seeing_through"], 12);
   EXPECT_EQ(s["pairs_without_overlap"], 13);
   EXPECT_EQ(s["ambiguous_matches"], 14);
+  EXPECT_EQ(s["near_matches"], 15);
   EXPECT_EQ(s["synchronous"], true);
   // The commands add what is theirs (explore: scans; replay: submap events).
-  EXPECT_EQ(s.size(), 14u);
+  EXPECT_EQ(s.size(), 15u);
   EXPECT_EQ(SlamSummary(stats, false)["synchronous"], false);
 }
 

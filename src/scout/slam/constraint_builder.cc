@@ -119,6 +119,8 @@ void Validate(const ConstraintBuilderOptions& options) {
         std::to_string(options.min_num_points));
   }
   RequireNonNegative("wide_ambiguity_min_innovation_m", options.wide_ambiguity_min_innovation_m);
+  RequireNonNegative("near_match_max_innovation_m", options.near_match_max_innovation_m);
+  RequireFraction("near_match_min_score_fraction", options.near_match_min_score_fraction);
   RequirePositiveConstraintOption("wide_ambiguity_window_factor",
                                   options.wide_ambiguity_window_factor);
   RequirePositiveConstraintOption("wide_ambiguity_max_window_m",
@@ -240,18 +242,28 @@ std::optional<Constraint> ConstraintBuilder::Search(int submap_id, int node_id,
   }
   ++num_searches_;
   bool ambiguous = false;
-  const std::optional<ScanMatchResult> match =
-      it->second.matcher->Match(initial_relative_pose, points, it->second.min_score,
-                                SearchWindow(travel_m), AngularSearchWindow(travel_m), &ambiguous);
+  // With near matches on, the search accepts down to the lower score, and a
+  // match below min_score must then land near the estimate.
+  const double min_score = it->second.min_score;
+  const bool near_rule = options_.near_match_max_innovation_m > 0.0;
+  const std::optional<ScanMatchResult> match = it->second.matcher->Match(
+      initial_relative_pose, points,
+      near_rule ? options_.near_match_min_score_fraction * min_score : min_score,
+      SearchWindow(travel_m), AngularSearchWindow(travel_m), &ambiguous);
   if (!match) {
     ++(ambiguous ? num_ambiguous_ : num_without_match_);
+    return std::nullopt;
+  }
+  const double innovation_m =
+      (match->pose.translation() - initial_relative_pose.translation()).norm();
+  const bool near = match->score < min_score;
+  if (near && innovation_m > options_.near_match_max_innovation_m) {
+    ++num_without_match_;
     return std::nullopt;
   }
   // A match far from the estimate may be a copy of the place (the hall next
   // door): search again around the match, far enough to reach back past the
   // estimate, and keep the match only if it is still the one best answer.
-  const double innovation_m =
-      (match->pose.translation() - initial_relative_pose.translation()).norm();
   if (innovation_m > max_innovation_m) {
     ++num_gated_;
     if (gated_match != nullptr) *gated_match = match->pose;
@@ -262,7 +274,7 @@ std::optional<Constraint> ConstraintBuilder::Search(int submap_id, int node_id,
     const double window_m = std::min(options_.wide_ambiguity_max_window_m,
                                      options_.wide_ambiguity_window_factor * innovation_m);
     const std::optional<ScanMatchResult> wide = it->second.matcher->Match(
-        match->pose, points, it->second.min_score, window_m, AngularSearchWindow(travel_m));
+        match->pose, points, min_score, window_m, AngularSearchWindow(travel_m));
     if (!wide || (wide->pose.translation() - match->pose.translation()).norm() >
                      it->second.matcher->options().ambiguity_radius_m) {
       ++num_wide_ambiguous_;
@@ -280,6 +292,7 @@ std::optional<Constraint> ConstraintBuilder::Search(int submap_id, int node_id,
     return std::nullopt;
   }
   ++num_found_;
+  if (near) ++num_near_matches_;
   return Constraint{submap_id,
                     node_id,
                     refined,

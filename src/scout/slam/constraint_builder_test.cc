@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "scout/slam/fast_correlative_scan_matcher.h"
 #include "scout/slam/global_test_world.h"
 
 namespace scout::slam {
@@ -337,6 +338,52 @@ TEST(ConstraintBuilderTest, AUniqueMatchFarFromTheEstimatePassesTheWideTest) {
   EXPECT_EQ(builder.num_wide_ambiguous(), 0);
 }
 
+// A revisit scoring a little below the minimum score is taken where its best
+// pose lands near the estimate, and not where it lands far from it.
+TEST(ConstraintBuilderTest, AMatchBelowTheMinimumScoreIsKeptOnlyNearTheEstimate) {
+  const SubmapScene scene;
+  const Rigid2d node_world(-3.7, -4.3, 0.4);
+  const Rigid2d truth = scene.submap_frame.inverse() * node_world;
+  const PointCloud scan = global_testing::ScanReturns(scene.walls, node_world);
+  const FastCorrelativeScanMatcher scorer(scene.grid, FastCorrelativeScanMatcherOptions{});
+  const std::optional<ScanMatchResult> at_truth = scorer.Match(truth, scan, 0.0, 0.1, 0.02);
+  ASSERT_TRUE(at_truth.has_value());
+  ConstraintBuilderOptions options;
+  options.min_score_fraction_of_own_scans = 0.0;  // one minimum score for the submap
+  options.min_score = at_truth->score / 0.9;      // the revisit scores 0.9 of it
+  options.near_match_min_score_fraction = 0.75;
+  const Rigid2d near_estimate = truth * Rigid2d(0.15, -0.1, 0.03);
+  const Rigid2d far_estimate = truth * Rigid2d(1.0, -0.6, 0.03);
+
+  options.near_match_max_innovation_m = 0.0;  // off
+  ConstraintBuilder off(options);
+  off.AddFinishedSubmap(0, scene.grid);
+  EXPECT_FALSE(off.Search(0, 1, near_estimate, scan, /*travel_m=*/100.0).has_value());
+  EXPECT_EQ(off.num_without_match(), 1);
+
+  options.near_match_max_innovation_m = 0.3;
+  ConstraintBuilder on(options);
+  on.AddFinishedSubmap(0, scene.grid);
+  const std::optional<Constraint> c = on.Search(0, 1, near_estimate, scan, 100.0);
+  ASSERT_TRUE(c.has_value());
+  EXPECT_LT((c->relative_pose.translation() - truth.translation()).norm(), 0.05);
+  EXPECT_EQ(on.num_near_matches(), 1);
+  // The same revisit from an estimate 1.2 m off (inside the 3 m window): the
+  // match is right, but a low score that far from the estimate is not enough.
+  EXPECT_FALSE(on.Search(0, 2, far_estimate, scan, 100.0).has_value());
+  EXPECT_EQ(on.num_without_match(), 1);
+  EXPECT_EQ(on.num_constraints_found(), 1);
+
+  // Scoring above the minimum, the far match is taken, and is not a near match.
+  options.min_score = 0.95 * at_truth->score;
+  ConstraintBuilder above(options);
+  above.AddFinishedSubmap(0, scene.grid);
+  const std::optional<Constraint> far = above.Search(0, 2, far_estimate, scan, 100.0);
+  ASSERT_TRUE(far.has_value());
+  EXPECT_LT((far->relative_pose.translation() - truth.translation()).norm(), 0.05);
+  EXPECT_EQ(above.num_near_matches(), 0);
+}
+
 TEST(ConstraintBuilderTest, FixedRatioSamplerIsDeterministic) {
   FixedRatioSampler a(0.3), b(0.3);
   for (int i = 0; i < 50; ++i) EXPECT_EQ(a.Pulse(), b.Pulse());
@@ -394,6 +441,12 @@ TEST(ConstraintBuilderTest, RejectsBadOptionsAndUnknownSubmaps) {
   EXPECT_THROW(ConstraintBuilder{options}, std::invalid_argument);
   options = {};
   options.wide_ambiguity_window_factor = 0.0;
+  EXPECT_THROW(ConstraintBuilder{options}, std::invalid_argument);
+  options = {};
+  options.near_match_max_innovation_m = -0.1;
+  EXPECT_THROW(ConstraintBuilder{options}, std::invalid_argument);
+  options = {};
+  options.near_match_min_score_fraction = 1.2;
   EXPECT_THROW(ConstraintBuilder{options}, std::invalid_argument);
   ConstraintBuilder builder({});
   EXPECT_THROW(builder.Search(4, 0, Rigid2d(), {Eigen::Vector2d(1.0, 0.0)}, 0.0),

@@ -117,6 +117,7 @@ SlamStats MapBuilder::GetStats() const {
   stats.num_wide_ambiguous_matches = graph.num_wide_ambiguous_matches;
   stats.num_matches_seeing_through = graph.num_matches_seeing_through;
   stats.num_pairs_without_overlap = graph.num_pairs_without_overlap;
+  stats.num_near_matches = graph.num_near_matches;
   stats.total_solve_time_s = graph.total_solve_time_s;
   stats.num_scans = num_scans_;
   stats.num_submap_events = num_submap_events_;

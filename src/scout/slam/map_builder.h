@@ -46,6 +46,7 @@ struct SlamStats {
   int num_wide_ambiguous_matches = 0;
   int num_matches_seeing_through = 0;
   int num_pairs_without_overlap = 0;
+  int num_near_matches = 0;  // loop closures found as near matches (PoseGraphStats)
   double total_solve_time_s = 0.0;
   int num_scans = 0;  // scans given to AddScan
   int num_submap_events = 0;

@@ -545,6 +545,7 @@ PoseGraphStats PoseGraph::GetStats() const {
   stats.num_wide_ambiguous_matches = constraint_builder_.num_wide_ambiguous();
   stats.num_matches_seeing_through = constraint_builder_.num_seeing_through();
   stats.num_pairs_without_overlap = constraint_builder_.num_without_overlap();
+  stats.num_near_matches = constraint_builder_.num_near_matches();
   return stats;
 }
 

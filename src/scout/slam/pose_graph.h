@@ -131,6 +131,9 @@ struct PoseGraphStats {
   int num_wide_ambiguous_matches = 0;
   int num_matches_seeing_through = 0;
   int num_pairs_without_overlap = 0;
+  // Loop closures (accepted, or later dropped) that scored below the minimum
+  // score and were taken as near matches (near_match_max_innovation_m).
+  int num_near_matches = 0;
   double total_solve_time_s = 0.0;
   double last_solve_time_s = 0.0;
 };

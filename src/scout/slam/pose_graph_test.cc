@@ -216,6 +216,10 @@ TEST(PoseGraphTest, MatchesFartherFromTheEstimateThanTheChainAllowsAreGated) {
   PoseGraphOptions options = Synchronous();
   options.loop_closure_chain_travel_m = 0.0;
   options.gate_loop_closures_by_chain = true;
+  // Near matches tie the first lap down with more closures of their own
+  // (checked at the end); without them the slip's matches show alone.
+  const double near_match_max_innovation_m = options.constraint_builder.near_match_max_innovation_m;
+  options.constraint_builder.near_match_max_innovation_m = 0.0;
   const Outcome gated = Feed(options, run);
   options.gate_loop_closures_by_chain = false;
   const Outcome outlier_rounds = Feed(options, run);
@@ -231,8 +235,13 @@ TEST(PoseGraphTest, MatchesFartherFromTheEstimateThanTheChainAllowsAreGated) {
   // ... where without it only the outlier rounds drop them, after a solve ...
   EXPECT_EQ(outlier_rounds.stats.num_gated_loop_closures, 0);
   EXPECT_GT(outlier_rounds.stats.num_rejected_loop_closures, 0);
-  // ... and without either they pull the first lap off.
+  // ... and without either they pull the first lap off, unless near matches
+  // hold it.
   EXPECT_GT(error(neither, 100), 0.05);
+  options.constraint_builder.near_match_max_innovation_m = near_match_max_innovation_m;
+  const Outcome held = Feed(options, run);
+  EXPECT_GT(held.stats.num_near_matches, 0);
+  EXPECT_LT(error(held, 100), 0.03);
 
   // The log tells which was which. Every gated match lay beyond its window.
   // Placed by the truth of the submap's first node, the submap frame shows
