@@ -99,9 +99,9 @@ class ReplayCli : public ::testing::Test {
 
 fs::path* ReplayCli::dir_ = nullptr;
 
-// loop_closures.csv holds one row per match the search found, as many of
-// each outcome as the summary counts; on this lap, whose reference is the
-// truth, the closures kept agree with the final map and the reference.
+// loop_closures.csv holds one row per loop-closure search, as many of each
+// outcome as the summary counts; on this lap, whose reference is the truth,
+// the closures kept agree with the final map and the reference.
 void ExpectLoopClosureLogMatches(const fs::path& csv, const nlohmann::json& slam) {
   std::istringstream lines(ReadFile(csv));
   std::string header;
@@ -114,11 +114,20 @@ void ExpectLoopClosureLogMatches(const fs::path& csv, const nlohmann::json& slam
     std::vector<std::string> f;
     std::istringstream fields(line);
     for (std::string v; std::getline(fields, v, ',');) f.push_back(v);
-    ASSERT_EQ(f.size(), 13u) << line;
+    ASSERT_GE(f.size(), 17u) << line;
+    ASSERT_LE(f.size(), 18u) << line;
+    f.resize(18);  // a trailing empty field is not read by getline
     ++outcomes[f[3]];
+    // A search without a match leaves the match's columns empty.
+    const bool without_match = f[3] == "no_match" || f[3] == "ambiguous";
+    EXPECT_EQ(f[8].empty(), without_match) << line;
+    EXPECT_EQ(f[5].empty(), without_match) << line;  // score
+    EXPECT_FALSE(f[17].empty()) << line;             // the estimate against the reference
     if (f[3] != "accepted") continue;
-    EXPECT_LT(std::stod(f[9]), 0.3) << line;  // final_error_m: the outlier rounds' limit
-    const double reference_error_m = std::stod(f[11]);
+    // Accepted at the minimum score, or below it as a near match.
+    EXPECT_EQ(std::stod(f[5]) < std::stod(f[6]), f[4] == "1") << line;
+    EXPECT_LT(std::stod(f[13]), 0.3) << line;  // final_error_m: the outlier rounds' limit
+    const double reference_error_m = std::stod(f[15]);
     reference_sum_m += reference_error_m;
     reference_max_m = std::max(reference_max_m, reference_error_m);
     ++accepted;
@@ -129,12 +138,17 @@ void ExpectLoopClosureLogMatches(const fs::path& csv, const nlohmann::json& slam
   // made while odometry drifted, carries the largest: 0.21 m).
   EXPECT_LT(reference_sum_m / accepted, 0.1);
   EXPECT_LT(reference_max_m, 0.3);
-  for (const auto& [outcome, rows] : outcomes) {
-    EXPECT_TRUE(outcome == "accepted" || outcome == "gated" || outcome == "dropped") << outcome;
-  }
   EXPECT_EQ(outcomes["accepted"], slam["loop_closures"].get<int>());
   EXPECT_EQ(outcomes["gated"], slam["gated_loop_closures"].get<int>());
   EXPECT_EQ(outcomes["dropped"], slam["rejected_loop_closures"].get<int>());
+  EXPECT_EQ(outcomes["no_match"] + outcomes["low_score_far_from_estimate"],
+            slam["searches_without_match"].get<int>());
+  EXPECT_EQ(outcomes["ambiguous"], slam["ambiguous_matches"].get<int>());
+  EXPECT_EQ(outcomes["wide_ambiguous"], slam["wide_ambiguous_matches"].get<int>());
+  EXPECT_EQ(outcomes["seeing_through"], slam["matches_seeing_through"].get<int>());
+  int rows = 0;
+  for (const auto& [outcome, n] : outcomes) rows += n;
+  EXPECT_EQ(rows, slam["loop_closure_searches"].get<int>());
   // Every search ends one way: no match, ambiguous, gated, ambiguous in a wide window,
   // seeing through walls, or found (then kept or dropped).
   EXPECT_EQ(slam["loop_closure_searches"].get<int>(),

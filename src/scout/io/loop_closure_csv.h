@@ -32,18 +32,29 @@ MatchDisagreement MatchError(const geometry::Rigid2d& match, const geometry::Rig
 geometry::Rigid2d ReferenceSubmapPose(const slam::LoopClosureRecord& record,
                                       const geometry::Rigid2d& reference_first_node);
 
-// "accepted", "gated" or "dropped".
+// "accepted", "gated", "dropped", "no_match", "low_score_far_from_estimate",
+// "ambiguous", "wide_ambiguous" or "seeing_through".
 std::string OutcomeName(slam::LoopClosureOutcome outcome);
 
-// Writes one row per record (through a temporary file and rename):
-//   node, node_time_s, submap, outcome, match_x_m, match_y_m, match_theta_rad,
-//   innovation_m, gate_window_m, final_error_m, final_error_deg,
-//   reference_error_m, reference_error_deg
-// innovation_m is |match - estimate at search time|; gate_window_m is empty
-// without a gate; final_error_* compare the match with the final graph
-// ('trajectory' by node id, 'submaps' by submap id, in one frame); reference_error_*
-// with 'reference_poses' (by node id, in any one frame), empty where the
-// reference lacks the node or the submap's first node, or is empty itself.
+// Writes one row per record, that is per loop-closure search (through a
+// temporary file and rename):
+//   node, node_time_s, submap, outcome, near_match, score, min_score,
+//   search_window_m, match_x_m, match_y_m, match_theta_rad, innovation_m,
+//   gate_window_m, final_error_m, final_error_deg, reference_error_m,
+//   reference_error_deg, estimate_reference_error_m
+// near_match is 1 for a closure taken below min_score as a near match; score
+// is the match's branch-and-bound score, min_score what the submap asks for,
+// search_window_m the half width of the translation window. The match
+// columns, innovation_m, score and the match's errors are empty for a search
+// that ended without a match (no_match, ambiguous). innovation_m is
+// |match - estimate at search time|; gate_window_m is empty without a gate;
+// final_error_* compare the match with the final graph ('trajectory' by node
+// id, 'submaps' by submap id, in one frame); reference_error_* with
+// 'reference_poses' (by node id, in any one frame), empty where the reference
+// lacks the node or the submap's first node, or is empty itself.
+// estimate_reference_error_m compares the graph's estimate at search time
+// with the reference the same way: a search whose window is smaller than it
+// could not reach the reference's pose.
 // A reference error holds the match's own error and local SLAM's drift
 // within the submap, between its first node and the part the node matched:
 // a submap made in a fast turn can put a right match a few degrees off.

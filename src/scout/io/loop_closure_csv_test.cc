@@ -89,10 +89,19 @@ TEST_F(LoopClosureCsvTest, WritesEachRecordWithItsOutcomeAndErrors) {
   slam::LoopClosureRecord copy = right;  // the same place 6 m on: a copy
   copy.outcome = slam::LoopClosureOutcome::kGated;
   copy.match = Rigid2d(11.0, 1.0, M_PI / 2);
+  right.score = 0.62;
+  right.min_score = 0.55;
+  right.search_window_m = 3.0;
   slam::LoopClosureRecord unknown = right;  // no reference for node 3
   unknown.node_id = 3;
   unknown.outcome = slam::LoopClosureOutcome::kDropped;
   unknown.gate_window_m = std::numeric_limits<double>::infinity();
+  unknown.near_match = true;
+  unknown.score = 0.5;
+  slam::LoopClosureRecord ambiguous = right;  // a search that left no match
+  ambiguous.outcome = slam::LoopClosureOutcome::kAmbiguous;
+  ambiguous.has_match = false;
+  ambiguous.score = std::numeric_limits<double>::quiet_NaN();
 
   // Final graph: submap 1 at (-1, 0), node 5 where the match says, node 3
   // 0.2 m off its match.
@@ -102,32 +111,46 @@ TEST_F(LoopClosureCsvTest, WritesEachRecordWithItsOutcomeAndErrors) {
   nodes[5].pose = Rigid2d(4.0, 1.0, M_PI / 2);
   nodes[3].pose = Rigid2d(4.0, 1.2, M_PI / 2);
   const auto path = dir_ / "loop_closures.csv";
-  WriteLoopClosureCsv({right, copy, unknown}, nodes, submaps, reference, path);
+  WriteLoopClosureCsv({right, copy, unknown, ambiguous}, nodes, submaps, reference, path);
 
   const std::vector<std::string> lines = Lines(path);
-  ASSERT_EQ(lines.size(), 4u);
+  ASSERT_EQ(lines.size(), 5u);
   EXPECT_EQ(lines[0],
-            "node,node_time_s,submap,outcome,match_x_m,match_y_m,match_theta_rad,innovation_m,"
-            "gate_window_m,final_error_m,final_error_deg,reference_error_m,reference_error_deg");
+            "node,node_time_s,submap,outcome,near_match,score,min_score,search_window_m,match_x_m,"
+            "match_y_m,match_theta_rad,innovation_m,gate_window_m,final_error_m,final_error_deg,"
+            "reference_error_m,reference_error_deg,estimate_reference_error_m");
   const auto a = Fields(lines[1]);
-  ASSERT_EQ(a.size(), 13u);
+  ASSERT_EQ(a.size(), 18u);
   EXPECT_EQ(a[0], "5");
   EXPECT_EQ(a[1], "0.500000");  // the node's stamp
   EXPECT_EQ(a[3], "accepted");
-  EXPECT_NEAR(std::stod(a[7]), 0.5, 1e-9);  // innovation
-  EXPECT_EQ(a[8], "2.0000");
-  EXPECT_NEAR(std::stod(a[9]), 0.0, 1e-4);
-  EXPECT_NEAR(std::stod(a[11]), 0.0, 1e-4);  // the reference agrees
+  EXPECT_EQ(a[4], "0");
+  EXPECT_EQ(a[5], "0.6200");
+  EXPECT_EQ(a[6], "0.5500");
+  EXPECT_EQ(a[7], "3.000");
+  EXPECT_NEAR(std::stod(a[11]), 0.5, 1e-9);  // innovation
+  EXPECT_EQ(a[12], "2.0000");
+  EXPECT_NEAR(std::stod(a[13]), 0.0, 1e-4);
+  EXPECT_NEAR(std::stod(a[15]), 0.0, 1e-4);  // the reference agrees
+  EXPECT_NEAR(std::stod(a[17]), 0.5, 1e-4);  // the estimate was 0.5 m off it
   const auto g = Fields(lines[2]);
   EXPECT_EQ(g[3], "gated");
-  EXPECT_NEAR(std::stod(g[7]), std::hypot(6.0, 0.5), 1e-4);
-  EXPECT_NEAR(std::stod(g[11]), 6.0, 1e-4);  // 6 m from the reference: a copy
+  EXPECT_NEAR(std::stod(g[11]), std::hypot(6.0, 0.5), 1e-4);
+  EXPECT_NEAR(std::stod(g[15]), 6.0, 1e-4);  // 6 m from the reference: a copy
   const auto d = Fields(lines[3]);
   EXPECT_EQ(d[3], "dropped");
-  EXPECT_EQ(d[8], "");  // no gate
-  EXPECT_NEAR(std::stod(d[9]), 0.2, 1e-4);
-  EXPECT_EQ(d[11], "");  // the reference lacks node 3
-  EXPECT_EQ(d[12], "");
+  EXPECT_EQ(d[4], "1");  // taken as a near match
+  EXPECT_EQ(d[12], "");  // no gate
+  EXPECT_NEAR(std::stod(d[13]), 0.2, 1e-4);
+  EXPECT_EQ(d[15], "");  // the reference lacks node 3
+  EXPECT_EQ(d[16], "");
+  EXPECT_EQ(d[17], "");
+  const auto m = Fields(lines[4]);
+  ASSERT_EQ(m.size(), 18u);
+  EXPECT_EQ(m[3], "ambiguous");
+  for (int k : {5, 8, 9, 10, 11, 13, 14, 15, 16}) EXPECT_EQ(m[k], "") << k;
+  EXPECT_EQ(m[6], "0.5500");                 // what the submap asked for
+  EXPECT_NEAR(std::stod(m[17]), 0.5, 1e-4);  // the estimate is still graded
 }
 
 TEST_F(LoopClosureCsvTest, RejectsARecordBeyondThePoses) {

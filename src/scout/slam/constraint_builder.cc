@@ -233,42 +233,48 @@ bool ConstraintBuilder::ShouldSearch(int submap_id, const geometry::Rigid2d& ini
 std::optional<Constraint> ConstraintBuilder::Search(int submap_id, int node_id,
                                                     const geometry::Rigid2d& initial_relative_pose,
                                                     const PointCloud& points, double travel_m,
-                                                    double max_innovation_m,
-                                                    std::optional<geometry::Rigid2d>* gated_match) {
+                                                    double max_innovation_m, SearchReport* report) {
   const auto it = submaps_.find(submap_id);
   if (it == submaps_.end()) {
     throw std::invalid_argument("ConstraintBuilder::Search: submap " + std::to_string(submap_id) +
                                 " was not added as finished");
   }
   ++num_searches_;
+  SearchReport local_report;
+  SearchReport& r = report != nullptr ? *report : local_report;
+  r = SearchReport{};
+  const double min_score = it->second.min_score;
+  r.min_score = min_score;
+  r.search_window_m = SearchWindow(travel_m);
+  const auto end = [&](LoopClosureOutcome outcome, std::atomic<int>& counter) {
+    r.outcome = outcome;
+    ++counter;
+    return std::nullopt;
+  };
   bool ambiguous = false;
   // With near matches on, the search accepts down to the lower score, and a
   // match below min_score must then land near the estimate.
-  const double min_score = it->second.min_score;
   const bool near_rule = options_.near_match_max_innovation_m > 0.0;
   const std::optional<ScanMatchResult> match = it->second.matcher->Match(
       initial_relative_pose, points,
-      near_rule ? options_.near_match_min_score_fraction * min_score : min_score,
-      SearchWindow(travel_m), AngularSearchWindow(travel_m), &ambiguous);
+      near_rule ? options_.near_match_min_score_fraction * min_score : min_score, r.search_window_m,
+      AngularSearchWindow(travel_m), &ambiguous);
   if (!match) {
-    ++(ambiguous ? num_ambiguous_ : num_without_match_);
-    return std::nullopt;
+    return ambiguous ? end(LoopClosureOutcome::kAmbiguous, num_ambiguous_)
+                     : end(LoopClosureOutcome::kNoMatch, num_without_match_);
   }
+  r.match = match->pose;
+  r.score = match->score;
   const double innovation_m =
       (match->pose.translation() - initial_relative_pose.translation()).norm();
   const bool near = match->score < min_score;
   if (near && innovation_m > options_.near_match_max_innovation_m) {
-    ++num_without_match_;
-    return std::nullopt;
+    return end(LoopClosureOutcome::kFar, num_without_match_);
   }
+  if (innovation_m > max_innovation_m) return end(LoopClosureOutcome::kGated, num_gated_);
   // A match far from the estimate may be a copy of the place (the hall next
   // door): search again around the match, far enough to reach back past the
   // estimate, and keep the match only if it is still the one best answer.
-  if (innovation_m > max_innovation_m) {
-    ++num_gated_;
-    if (gated_match != nullptr) *gated_match = match->pose;
-    return std::nullopt;
-  }
   if (options_.wide_ambiguity_min_innovation_m > 0.0 &&
       innovation_m > options_.wide_ambiguity_min_innovation_m) {
     const double window_m = std::min(options_.wide_ambiguity_max_window_m,
@@ -277,20 +283,21 @@ std::optional<Constraint> ConstraintBuilder::Search(int submap_id, int node_id,
         match->pose, points, min_score, window_m, AngularSearchWindow(travel_m));
     if (!wide || (wide->pose.translation() - match->pose.translation()).norm() >
                      it->second.matcher->options().ambiguity_radius_m) {
-      ++num_wide_ambiguous_;
-      return std::nullopt;
+      return end(LoopClosureOutcome::kWideAmbiguous, num_wide_ambiguous_);
     }
   }
   // Branch and bound is only cell- and step-accurate; refine on the grid
   // itself, anchored at the branch-and-bound answer.
   const geometry::Rigid2d refined =
       ceres_scan_matcher_.Match(match->pose.translation(), match->pose, points, *it->second.grid);
+  r.match = refined;
   if (options_.max_see_through < 1.0 &&
       SeeThroughFraction(*it->second.grid, refined, points, options_.see_through_slack_m) >
           options_.max_see_through) {
-    ++num_seeing_through_;
-    return std::nullopt;
+    return end(LoopClosureOutcome::kSeeingThrough, num_seeing_through_);
   }
+  r.outcome = LoopClosureOutcome::kAccepted;
+  r.near = near;
   ++num_found_;
   if (near) ++num_near_matches_;
   return Constraint{submap_id,

@@ -200,19 +200,33 @@ class ConstraintBuilder {
   bool ShouldSearch(int submap_id, const geometry::Rigid2d& initial_relative_pose,
                     const PointCloud& points, double node_travel_m);
 
+  // How one search ended, for the loop-closure log.
+  struct SearchReport {
+    // kAccepted when a constraint was returned (the pose graph may drop it
+    // later); never kDropped here.
+    LoopClosureOutcome outcome = LoopClosureOutcome::kNoMatch;
+    // The match (refined once it got that far), where the search found one.
+    std::optional<geometry::Rigid2d> match;
+    double score = std::numeric_limits<double>::quiet_NaN();      // its branch-and-bound score
+    double min_score = std::numeric_limits<double>::quiet_NaN();  // the submap's
+    double search_window_m = 0.0;  // half width of the translation window
+    bool near = false;             // accepted as a near match
+  };
+
   // Searches node 'node_id' ('points' in the node's robot frame) in the
   // finished submap 'submap_id' around 'initial_relative_pose' (node in
-  // submap frame) and returns the loop closure if one scores >= min_score.
-  // 'travel_m' is the length of the trajectory between the node and the
-  // submap, which sizes the search window. A match whose translation is
-  // more than 'max_innovation_m' from 'initial_relative_pose' is rejected
-  // (counted by num_gated; its pose goes to 'gated_match' if given). Throws
+  // submap frame) and returns the loop closure if one scores >= min_score
+  // (or is a near match, near_match_max_innovation_m). 'travel_m' is the
+  // length of the trajectory between the node and the submap, which sizes
+  // the search window. A match whose translation is more than
+  // 'max_innovation_m' from 'initial_relative_pose' is rejected (counted by
+  // num_gated). How the search ended goes to 'report' if given. Throws
   // std::invalid_argument if the submap was not added.
   std::optional<Constraint> Search(
       int submap_id, int node_id, const geometry::Rigid2d& initial_relative_pose,
       const PointCloud& points, double travel_m,
       double max_innovation_m = std::numeric_limits<double>::infinity(),
-      std::optional<geometry::Rigid2d>* gated_match = nullptr);
+      SearchReport* report = nullptr);
   // The translation window searched for a node 'travel_m' of trajectory away.
   double SearchWindow(double travel_m) const;
   // The angular window (radians) searched for a node 'travel_m' away.

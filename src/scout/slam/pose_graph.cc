@@ -314,25 +314,30 @@ void PoseGraph::SearchPairs(const std::vector<std::pair<int, int>>& pairs) {
   // Each branch-and-bound search takes milliseconds and they are independent:
   // with a finished submap, every older node nearby is searched at once.
   std::vector<std::optional<Constraint>> found(chosen.size());
-  std::vector<std::optional<geometry::Rigid2d>> gated(chosen.size());
+  std::vector<ConstraintBuilder::SearchReport> reports(chosen.size());
   common::ParallelFor(static_cast<int64_t>(chosen.size()), 1, [&](int64_t begin, int64_t end) {
     for (int64_t i = begin; i < end; ++i) {
       const Search& s = chosen[i];
       found[i] = constraint_builder_.Search(s.submap_id, s.node_id, s.initial_relative_pose,
-                                            *s.points, s.travel_m, s.max_innovation_m, &gated[i]);
+                                            *s.points, s.travel_m, s.max_innovation_m, &reports[i]);
     }
   });
   std::lock_guard<std::mutex> lock(mutex_);
   for (size_t i = 0; i < chosen.size(); ++i) {
     ++stats_.num_searches;
-    if (!found[i] && !gated[i]) continue;
     const Search& s = chosen[i];
     const Submap& submap = submaps_[s.submap_id];
+    const ConstraintBuilder::SearchReport& report = reports[i];
     LoopClosureRecord record;
     record.node_id = s.node_id;
     record.submap_id = s.submap_id;
-    record.outcome = found[i] ? LoopClosureOutcome::kAccepted : LoopClosureOutcome::kGated;
-    record.match = found[i] ? found[i]->relative_pose : *gated[i];
+    record.outcome = report.outcome;
+    record.has_match = report.match.has_value();
+    if (report.match) record.match = *report.match;
+    record.score = report.score;
+    record.min_score = report.min_score;
+    record.search_window_m = report.search_window_m;
+    record.near_match = report.near;
     record.estimate = s.initial_relative_pose;
     record.gate_window_m = s.max_innovation_m;
     record.submap_first_node_id = submap.node_ids.front();

@@ -189,8 +189,9 @@ class PoseGraph {
   std::vector<SubmapState> GetSubmaps() const;
   // Returns every constraint found so far.
   std::vector<Constraint> GetConstraints() const;
-  // Returns every match the loop-closure search found (accepted, gated or
-  // dropped since), in the order they were found.
+  // Returns every loop-closure search, how it ended (accepted, gated or
+  // dropped since; or why no closure was made) and the match where there
+  // was one, in the order they were made.
   std::vector<LoopClosureRecord> GetLoopClosureLog() const;
   // Returns the transform that maps local SLAM poses into the global frame,
   // as of the latest solve.

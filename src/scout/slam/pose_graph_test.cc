@@ -266,13 +266,36 @@ TEST(PoseGraphTest, MatchesFartherFromTheEstimateThanTheChainAllowsAreGated) {
   EXPECT_EQ(CountOutcome(outlier_rounds, LoopClosureOutcome::kAccepted),
             outlier_rounds.stats.num_loop_closures);
   EXPECT_EQ(CountOutcome(outlier_rounds, LoopClosureOutcome::kGated), 0);
-  // Every search ends one way, gated or not.
-  for (const Outcome* out : {&gated, &outlier_rounds, &neither}) {
+  // Every search ends one way, gated or not, and the log holds each once.
+  for (const Outcome* out : {&gated, &outlier_rounds, &neither, &held}) {
     const PoseGraphStats& st = out->stats;
     EXPECT_EQ(st.num_searches, st.num_searches_without_match + st.num_ambiguous_matches +
                                    st.num_gated_loop_closures + st.num_wide_ambiguous_matches +
                                    st.num_matches_seeing_through + st.num_loop_closures +
                                    st.num_rejected_loop_closures);
+    EXPECT_EQ(static_cast<int>(out->log.size()), st.num_searches);
+    EXPECT_EQ(CountOutcome(*out, LoopClosureOutcome::kNoMatch) +
+                  CountOutcome(*out, LoopClosureOutcome::kFar),
+              st.num_searches_without_match);
+    EXPECT_EQ(CountOutcome(*out, LoopClosureOutcome::kAmbiguous), st.num_ambiguous_matches);
+    EXPECT_EQ(CountOutcome(*out, LoopClosureOutcome::kSeeingThrough),
+              st.num_matches_seeing_through);
+    int near = 0;
+    for (const LoopClosureRecord& r : out->log) {
+      // A match and its score, or neither; the submap's minimum score and the
+      // window always.
+      EXPECT_EQ(r.has_match, std::isfinite(r.score));
+      EXPECT_EQ(r.has_match, r.outcome != LoopClosureOutcome::kNoMatch &&
+                                 r.outcome != LoopClosureOutcome::kAmbiguous);
+      EXPECT_GT(r.min_score, 0.0);
+      EXPECT_GT(r.search_window_m, 0.0);
+      if (r.near_match) {
+        ++near;
+        EXPECT_LT(r.score, r.min_score);
+        EXPECT_LE((r.match.translation() - r.estimate.translation()).norm(), 0.35);
+      }
+    }
+    EXPECT_EQ(near, st.num_near_matches);
   }
 }
 

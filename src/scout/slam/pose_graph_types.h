@@ -33,23 +33,38 @@ struct Constraint {
   ConstraintKind kind = ConstraintKind::kIntraSubmap;
 };
 
-// What became of a match the loop-closure search found.
+// How a loop-closure search ended.
 enum class LoopClosureOutcome {
-  kAccepted,  // added to the graph and still there
-  kGated,     // farther from the estimate than the chain's window allows
-  kDropped,   // added, then dropped as an outlier after a solve
+  kAccepted,       // added to the graph and still there
+  kGated,          // farther from the estimate than the chain's window allows
+  kDropped,        // added, then dropped as an outlier after a solve
+  kNoMatch,        // nothing in the window reached the search's minimum score
+  kFar,            // the best scored below min_score and landed too far for a near match
+  kAmbiguous,      // a pose far enough from the best scored about as well
+  kWideAmbiguous,  // not the one best again in a wider window around itself
+  kSeeingThrough,  // its rays crossed walls the submap knows
 };
 
-// One match of the loop-closure search, kept so that a user can see which
-// closures shaped the map and check them against a reference.
+// One loop-closure search, kept so that a user can see which closures shaped
+// the map, why the others were not made, and check both against a reference.
 struct LoopClosureRecord {
   int node_id = 0;
   int submap_id = 0;
   LoopClosureOutcome outcome = LoopClosureOutcome::kAccepted;
   // Node frame -> submap frame: as matched (refined when accepted), and as
-  // the graph estimated it when the pair was searched.
+  // the graph estimated it when the pair was searched. 'match' is only
+  // meaningful with has_match (no match, or an ambiguous one, leaves none).
+  bool has_match = true;
   geometry::Rigid2d match;
   geometry::Rigid2d estimate;
+  // The branch-and-bound score of the match (NaN without one), the score the
+  // submap asks for (min_score, or less for a thin submap), and the half
+  // width of the translation window searched.
+  double score = std::numeric_limits<double>::quiet_NaN();
+  double min_score = std::numeric_limits<double>::quiet_NaN();
+  double search_window_m = 0.0;
+  // Accepted (or dropped since) scoring below min_score, as a near match.
+  bool near_match = false;
   // The gate's limit on |match - estimate| (infinity: no gate).
   double gate_window_m = std::numeric_limits<double>::infinity();
   // The submap's first node and that node's pose in the submap frame (local
