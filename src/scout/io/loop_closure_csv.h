@@ -46,7 +46,8 @@ std::string OutcomeName(slam::LoopClosureOutcome outcome);
 // is the match's branch-and-bound score, min_score what the submap asks for,
 // search_window_m the half width of the translation window. The match
 // columns, innovation_m, score and the match's errors are empty for a search
-// that ended without a match (no_match, ambiguous). innovation_m is
+// that ended without a match (no_match; an ambiguous search gives its best).
+// innovation_m is
 // |match - estimate at search time|; gate_window_m is empty without a gate;
 // final_error_* compare the match with the final graph ('trajectory' by node
 // id, 'submaps' by submap id, in one frame); reference_error_* with

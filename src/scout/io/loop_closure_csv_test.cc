@@ -98,10 +98,10 @@ TEST_F(LoopClosureCsvTest, WritesEachRecordWithItsOutcomeAndErrors) {
   unknown.gate_window_m = std::numeric_limits<double>::infinity();
   unknown.near_match = true;
   unknown.score = 0.5;
-  slam::LoopClosureRecord ambiguous = right;  // a search that left no match
-  ambiguous.outcome = slam::LoopClosureOutcome::kAmbiguous;
-  ambiguous.has_match = false;
-  ambiguous.score = std::numeric_limits<double>::quiet_NaN();
+  slam::LoopClosureRecord none = right;  // a search that found no match
+  none.outcome = slam::LoopClosureOutcome::kNoMatch;
+  none.has_match = false;
+  none.score = std::numeric_limits<double>::quiet_NaN();
 
   // Final graph: submap 1 at (-1, 0), node 5 where the match says, node 3
   // 0.2 m off its match.
@@ -111,7 +111,7 @@ TEST_F(LoopClosureCsvTest, WritesEachRecordWithItsOutcomeAndErrors) {
   nodes[5].pose = Rigid2d(4.0, 1.0, M_PI / 2);
   nodes[3].pose = Rigid2d(4.0, 1.2, M_PI / 2);
   const auto path = dir_ / "loop_closures.csv";
-  WriteLoopClosureCsv({right, copy, unknown, ambiguous}, nodes, submaps, reference, path);
+  WriteLoopClosureCsv({right, copy, unknown, none}, nodes, submaps, reference, path);
 
   const std::vector<std::string> lines = Lines(path);
   ASSERT_EQ(lines.size(), 5u);
@@ -147,7 +147,7 @@ TEST_F(LoopClosureCsvTest, WritesEachRecordWithItsOutcomeAndErrors) {
   EXPECT_EQ(d[17], "");
   const auto m = Fields(lines[4]);
   ASSERT_EQ(m.size(), 18u);
-  EXPECT_EQ(m[3], "ambiguous");
+  EXPECT_EQ(m[3], "no_match");
   for (int k : {5, 8, 9, 10, 11, 13, 14, 15, 16}) EXPECT_EQ(m[k], "") << k;
   EXPECT_EQ(m[6], "0.5500");                 // what the submap asked for
   EXPECT_NEAR(std::stod(m[17]), 0.5, 1e-4);  // the estimate is still graded

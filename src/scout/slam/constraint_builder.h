@@ -205,7 +205,8 @@ class ConstraintBuilder {
     // kAccepted when a constraint was returned (the pose graph may drop it
     // later); never kDropped here.
     LoopClosureOutcome outcome = LoopClosureOutcome::kNoMatch;
-    // The match (refined once it got that far), where the search found one.
+    // The match (refined once it got that far; the best of an ambiguous
+    // search), where the search found one.
     std::optional<geometry::Rigid2d> match;
     double score = std::numeric_limits<double>::quiet_NaN();      // its branch-and-bound score
     double min_score = std::numeric_limits<double>::quiet_NaN();  // the submap's

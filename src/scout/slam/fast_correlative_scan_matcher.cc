@@ -201,9 +201,10 @@ std::optional<ScanMatchResult> FastCorrelativeScanMatcher::Match(
 
 std::optional<ScanMatchResult> FastCorrelativeScanMatcher::Match(
     const geometry::Rigid2d& initial_pose_estimate, const PointCloud& points, double min_score,
-    double linear_window_m, double angular_window_rad, bool* ambiguous) const {
+    double linear_window_m, double angular_window_rad, bool* ambiguous,
+    ScanMatchResult* ambiguous_best) const {
   return Search(initial_pose_estimate, points, linear_window_m, angular_window_rad, min_score,
-                /*check_ambiguity=*/true, ambiguous);
+                /*check_ambiguity=*/true, ambiguous, ambiguous_best);
 }
 
 std::optional<ScanMatchResult> FastCorrelativeScanMatcher::MatchFullSubmap(const PointCloud& points,
@@ -219,7 +220,7 @@ std::optional<ScanMatchResult> FastCorrelativeScanMatcher::MatchFullSubmap(const
 std::optional<ScanMatchResult> FastCorrelativeScanMatcher::Search(
     const geometry::Rigid2d& initial_pose_estimate, const PointCloud& points,
     double linear_window_m, double angular_window_rad, double min_score, bool check_ambiguity,
-    bool* ambiguous) const {
+    bool* ambiguous, ScanMatchResult* ambiguous_best) const {
   if (points.empty()) return std::nullopt;
   const double resolution = limits_.resolution();
   double max_range_m = 0.0;
@@ -334,19 +335,20 @@ std::optional<ScanMatchResult> FastCorrelativeScanMatcher::Search(
 
   const std::optional<Candidate> best =
       best_candidate(min_sum_for(min_score), Exclusion{0, 0, -1.0});
-  if (best.has_value() && check_ambiguity && options_.ambiguity_radius_m > 0.0) {
-    const double best_score = ScoreOfSum(best->sum, points.size());
-    const Exclusion around_best{best->x, best->y, options_.ambiguity_radius_m / resolution};
-    if (best_candidate(min_sum_for(best_score - options_.ambiguity_score_margin), around_best)) {
-      if (ambiguous != nullptr) *ambiguous = true;
-      return std::nullopt;  // a distant pose fits about as well: ambiguous
-    }
-  }
   if (!best.has_value()) return std::nullopt;
   const Eigen::Vector2d translation =
       initial_pose_estimate.translation() + resolution * Eigen::Vector2d(best->x, best->y);
-  return ScanMatchResult{geometry::Rigid2d(translation, angles[best->angle_index]),
-                         ScoreOfSum(best->sum, points.size())};
+  const ScanMatchResult result{geometry::Rigid2d(translation, angles[best->angle_index]),
+                               ScoreOfSum(best->sum, points.size())};
+  if (check_ambiguity && options_.ambiguity_radius_m > 0.0) {
+    const Exclusion around_best{best->x, best->y, options_.ambiguity_radius_m / resolution};
+    if (best_candidate(min_sum_for(result.score - options_.ambiguity_score_margin), around_best)) {
+      if (ambiguous != nullptr) *ambiguous = true;
+      if (ambiguous_best != nullptr) *ambiguous_best = result;
+      return std::nullopt;  // a distant pose fits about as well: ambiguous
+    }
+  }
+  return result;
 }
 
 }  // namespace scout::slam

@@ -154,11 +154,16 @@ TEST(FastCorrelativeScanMatcherTest, RejectsAmbiguousMatchesWhenAskedTo) {
   // The caller can tell that from no match at all (the loop-closure counts).
   const FastCorrelativeScanMatcher matcher(grid, options);
   bool ambiguous = false;
+  ScanMatchResult ambiguous_best;
   EXPECT_FALSE(matcher
                    .Match(truth, points, 0.55, options.linear_search_window_m,
-                          options.angular_search_window_rad, &ambiguous)
+                          options.angular_search_window_rad, &ambiguous, &ambiguous_best)
                    .has_value());
   EXPECT_TRUE(ambiguous);
+  // The best of the ambiguous search is still told: one of the two rooms,
+  // scoring as the blind matcher's answer does.
+  EXPECT_DOUBLE_EQ(ambiguous_best.score, blind->score);
+  EXPECT_EQ(ambiguous_best.pose.translation(), blind->pose.translation());
   bool unmatched_ambiguous = false;
   EXPECT_FALSE(matcher
                    .Match(truth, points, 0.99, options.linear_search_window_m,

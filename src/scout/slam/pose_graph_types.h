@@ -53,7 +53,8 @@ struct LoopClosureRecord {
   LoopClosureOutcome outcome = LoopClosureOutcome::kAccepted;
   // Node frame -> submap frame: as matched (refined when accepted), and as
   // the graph estimated it when the pair was searched. 'match' is only
-  // meaningful with has_match (no match, or an ambiguous one, leaves none).
+  // meaningful with has_match (kNoMatch leaves none; an ambiguous search
+  // keeps its best).
   bool has_match = true;
   geometry::Rigid2d match;
   geometry::Rigid2d estimate;
