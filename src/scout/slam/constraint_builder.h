@@ -241,7 +241,8 @@ class ConstraintBuilder {
   // match, ambiguous, gated, wide ambiguous, seeing through, found.
   int num_searches() const { return num_searches_; }
   int num_constraints_found() const { return num_found_; }
-  // Of those, found by the near search (near_match_max_innovation_m).
+  // Of those, near matches: below min_score, near the estimate
+  // (near_match_max_innovation_m).
   int num_near_matches() const { return num_near_matches_; }
   int num_without_match() const { return num_without_match_; }
   int num_ambiguous() const { return num_ambiguous_; }
