@@ -72,7 +72,7 @@ void WriteLoopClosureCsv(const std::vector<slam::LoopClosureRecord>& records,
     MatchDisagreement final_error{NAN, NAN};
     MatchDisagreement reference_error{NAN, NAN};
     MatchDisagreement estimate_reference_error{NAN, NAN};
-    // Without a match (no match, or an ambiguous one) its columns are empty.
+    // Without a match (no_match) its columns are empty.
     double innovation_m = NAN;
     Eigen::Vector3d match(NAN, NAN, NAN);
     if (r.has_match) {

@@ -251,18 +251,17 @@ std::optional<Constraint> ConstraintBuilder::Search(int submap_id, int node_id,
     ++counter;
     return std::nullopt;
   };
-  bool ambiguous = false;
-  ScanMatchResult ambiguous_best;
+  std::optional<ScanMatchResult> ambiguous;
   // With near matches on, the search accepts down to the lower score, and a
   // match below min_score must then land near the estimate.
   const bool near_rule = options_.near_match_max_innovation_m > 0.0;
   const std::optional<ScanMatchResult> match = it->second.matcher->Match(
       initial_relative_pose, points,
       near_rule ? options_.near_match_min_score_fraction * min_score : min_score, r.search_window_m,
-      AngularSearchWindow(travel_m), &ambiguous, &ambiguous_best);
+      AngularSearchWindow(travel_m), &ambiguous);
   if (!match && ambiguous) {
-    r.match = ambiguous_best.pose;
-    r.score = ambiguous_best.score;
+    r.match = ambiguous->pose;
+    r.score = ambiguous->score;
     return end(LoopClosureOutcome::kAmbiguous, num_ambiguous_);
   }
   if (!match) return end(LoopClosureOutcome::kNoMatch, num_without_match_);

@@ -201,10 +201,10 @@ std::optional<ScanMatchResult> FastCorrelativeScanMatcher::Match(
 
 std::optional<ScanMatchResult> FastCorrelativeScanMatcher::Match(
     const geometry::Rigid2d& initial_pose_estimate, const PointCloud& points, double min_score,
-    double linear_window_m, double angular_window_rad, bool* ambiguous,
-    ScanMatchResult* ambiguous_best) const {
+    double linear_window_m, double angular_window_rad,
+    std::optional<ScanMatchResult>* ambiguous) const {
   return Search(initial_pose_estimate, points, linear_window_m, angular_window_rad, min_score,
-                /*check_ambiguity=*/true, ambiguous, ambiguous_best);
+                /*check_ambiguity=*/true, ambiguous);
 }
 
 std::optional<ScanMatchResult> FastCorrelativeScanMatcher::MatchFullSubmap(const PointCloud& points,
@@ -220,7 +220,7 @@ std::optional<ScanMatchResult> FastCorrelativeScanMatcher::MatchFullSubmap(const
 std::optional<ScanMatchResult> FastCorrelativeScanMatcher::Search(
     const geometry::Rigid2d& initial_pose_estimate, const PointCloud& points,
     double linear_window_m, double angular_window_rad, double min_score, bool check_ambiguity,
-    bool* ambiguous, ScanMatchResult* ambiguous_best) const {
+    std::optional<ScanMatchResult>* ambiguous) const {
   if (points.empty()) return std::nullopt;
   const double resolution = limits_.resolution();
   double max_range_m = 0.0;
@@ -343,8 +343,7 @@ std::optional<ScanMatchResult> FastCorrelativeScanMatcher::Search(
   if (check_ambiguity && options_.ambiguity_radius_m > 0.0) {
     const Exclusion around_best{best->x, best->y, options_.ambiguity_radius_m / resolution};
     if (best_candidate(min_sum_for(result.score - options_.ambiguity_score_margin), around_best)) {
-      if (ambiguous != nullptr) *ambiguous = true;
-      if (ambiguous_best != nullptr) *ambiguous_best = result;
+      if (ambiguous != nullptr) *ambiguous = result;
       return std::nullopt;  // a distant pose fits about as well: ambiguous
     }
   }

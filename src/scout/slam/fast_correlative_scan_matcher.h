@@ -67,13 +67,12 @@ class FastCorrelativeScanMatcher {
   std::optional<ScanMatchResult> Match(const geometry::Rigid2d& initial_pose_estimate,
                                        const PointCloud& points, double min_score) const;
   // As Match with the windows given instead of the options'. With
-  // 'ambiguous', an ambiguous match (nullopt) sets it to true, and with
-  // 'ambiguous_best' that match goes there.
+  // 'ambiguous', an ambiguous match (nullopt returned) goes there: the caller
+  // can tell it from no match and still see the best pose.
   std::optional<ScanMatchResult> Match(const geometry::Rigid2d& initial_pose_estimate,
                                        const PointCloud& points, double min_score,
                                        double linear_window_m, double angular_window_rad,
-                                       bool* ambiguous = nullptr,
-                                       ScanMatchResult* ambiguous_best = nullptr) const;
+                                       std::optional<ScanMatchResult>* ambiguous = nullptr) const;
 
   // As Match, but searching every rotation and every translation that keeps
   // the grid's centre within the window centred on it (global localisation).
@@ -114,8 +113,8 @@ class FastCorrelativeScanMatcher {
   std::optional<ScanMatchResult> Search(const geometry::Rigid2d& initial_pose_estimate,
                                         const PointCloud& points, double linear_window_m,
                                         double angular_window_rad, double min_score,
-                                        bool check_ambiguity, bool* ambiguous = nullptr,
-                                        ScanMatchResult* ambiguous_best = nullptr) const;
+                                        bool check_ambiguity,
+                                        std::optional<ScanMatchResult>* ambiguous = nullptr) const;
 
   FastCorrelativeScanMatcherOptions options_;
   grid::MapLimits limits_;

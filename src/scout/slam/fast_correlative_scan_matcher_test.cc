@@ -153,28 +153,27 @@ TEST(FastCorrelativeScanMatcherTest, RejectsAmbiguousMatchesWhenAskedTo) {
   EXPECT_FALSE(FastCorrelativeScanMatcher(grid, options).Match(truth, points, 0.55).has_value());
   // The caller can tell that from no match at all (the loop-closure counts).
   const FastCorrelativeScanMatcher matcher(grid, options);
-  bool ambiguous = false;
-  ScanMatchResult ambiguous_best;
+  std::optional<ScanMatchResult> ambiguous;
   EXPECT_FALSE(matcher
                    .Match(truth, points, 0.55, options.linear_search_window_m,
-                          options.angular_search_window_rad, &ambiguous, &ambiguous_best)
+                          options.angular_search_window_rad, &ambiguous)
                    .has_value());
-  EXPECT_TRUE(ambiguous);
+  ASSERT_TRUE(ambiguous.has_value());
   // The best of the ambiguous search is still told: one of the two rooms,
   // scoring as the blind matcher's answer does.
-  EXPECT_DOUBLE_EQ(ambiguous_best.score, blind->score);
-  EXPECT_EQ(ambiguous_best.pose.translation(), blind->pose.translation());
-  bool unmatched_ambiguous = false;
+  EXPECT_DOUBLE_EQ(ambiguous->score, blind->score);
+  EXPECT_EQ(ambiguous->pose.translation(), blind->pose.translation());
+  std::optional<ScanMatchResult> unmatched_ambiguous;
   EXPECT_FALSE(matcher
                    .Match(truth, points, 0.99, options.linear_search_window_m,
                           options.angular_search_window_rad, &unmatched_ambiguous)
                    .has_value());
-  EXPECT_FALSE(unmatched_ambiguous);  // nothing scores 0.99: no match, not ambiguous
+  EXPECT_FALSE(unmatched_ambiguous.has_value());  // nothing scores 0.99: no match, not ambiguous
   // A window too small to reach the other room leaves nothing to confuse.
-  bool near_ambiguous = false;
+  std::optional<ScanMatchResult> near_ambiguous;
   const std::optional<ScanMatchResult> near =
       matcher.Match(truth, points, 0.55, 1.0, 0.5, &near_ambiguous);
-  EXPECT_FALSE(near_ambiguous);
+  EXPECT_FALSE(near_ambiguous.has_value());
   ASSERT_TRUE(near.has_value());
   EXPECT_LT((near->pose.translation() - truth.translation()).norm(), 0.06) << near->pose;
 }
