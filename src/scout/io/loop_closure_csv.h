@@ -47,8 +47,8 @@ std::string OutcomeName(slam::LoopClosureOutcome outcome);
 // search_window_m the half width of the translation window. The match
 // columns, innovation_m, score and the match's errors are empty for a search
 // that ended without a match (no_match; an ambiguous search gives its best).
-// innovation_m is
-// |match - estimate at search time|; gate_window_m is empty without a gate;
+// innovation_m is |match - estimate at search time|; gate_window_m is empty
+// without a gate;
 // final_error_* compare the match with the final graph ('trajectory' by node
 // id, 'submaps' by submap id, in one frame); reference_error_* with
 // 'reference_poses' (by node id, in any one frame), empty where the reference
