@@ -175,8 +175,6 @@ slam::SlamOptions EffectiveSlamOptions(const ExplorationOptions& options) {
   slam.local.ceres_scan_matcher.translation_weight = l.translation_weight;
   slam.local.ceres_scan_matcher.rotation_weight = l.rotation_weight;
   slam.local.ceres_scan_matcher.likelihood_field.sigma_m = l.likelihood_field_sigma_m;
-  slam.pose_graph.constraint_builder.near_match_max_innovation_m =
-      options.explore.near_match_max_innovation_m;
   if (options.explore.synchronous_slam) {
     slam.pose_graph.synchronous = true;
     slam.pose_graph.synchronous_solve_delay_nodes = options.explore.solve_delay_nodes;

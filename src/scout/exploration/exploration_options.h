@@ -92,9 +92,6 @@ struct ExploreOptions {
     double likelihood_field_sigma_m = 0.0;
   };
   LocalSlam local_slam;
-  // Replaces slam.pose_graph.constraint_builder.near_match_max_innovation_m
-  // (0 = no near matches, the explorer's evaluation was made without them).
-  double near_match_max_innovation_m = 0.0;
   // Replaces frontier.inflation_radius_m (the paper's 0.40 m, which replay
   // and frontier-bench keep) for the frontier detector's reachability search.
   // Walls in the SLAM map stand up to a cell proud of the true ones, and the

@@ -147,7 +147,6 @@ void ReadExploreOptions(YamlSection s, exploration::ExploreOptions* o) {
     l.ReadNonNegative("likelihood_field_sigma_m", &o->local_slam.likelihood_field_sigma_m);
     l.RejectUnknownKeys();
   }
-  s.ReadNonNegative("near_match_max_innovation_m", &o->near_match_max_innovation_m);
   s.ReadNonNegativeAtMost("frontier_inflation_radius_m", &o->frontier_inflation_radius_m, 5.0);
   s.ReadPoints("boundary", &o->boundary);
   ReadGoals(s.Section("goals"), &o->goals);

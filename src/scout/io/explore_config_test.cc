@@ -39,7 +39,6 @@ TEST_F(ExploreConfigTest, DefaultFileMatchesTheBuiltInDefaults) {
   EXPECT_DOUBLE_EQ(c.explore.local_slam.likelihood_field_sigma_m,
                    d.explore.local_slam.likelihood_field_sigma_m);
   EXPECT_DOUBLE_EQ(c.explore.frontier_inflation_radius_m, d.explore.frontier_inflation_radius_m);
-  EXPECT_DOUBLE_EQ(c.explore.near_match_max_innovation_m, d.explore.near_match_max_innovation_m);
   EXPECT_EQ(c.explore.boundary, d.explore.boundary);
   EXPECT_DOUBLE_EQ(c.explore.goals.progress_timeout_s, d.explore.goals.progress_timeout_s);
   EXPECT_DOUBLE_EQ(c.explore.goals.max_stand_off_m, d.explore.goals.max_stand_off_m);
