@@ -155,7 +155,11 @@ not_run() {
 # 8a6e5c2 (stuck recoveries), 137c2f9 (failed goals retried), 216716d and 2c431ab (guard
 # stops), 512946f (information gain 1), d13fac7 and 9847fb7 (the scan check), 428423a (the last
 # resort), d4f3d46 (backing up); f48c5a4 makes them all moot (see git history for the rules).
-EXPLORE_BEHAVIOUR_COMMIT=f48c5a4
+# 27905ca: the explorer's loop-closure search keeps near matches (fbdb285), which it had kept
+# off; any run may close different loops, so every older explore run is stale. (8b61b43 turned
+# them off again and 25f9950 back on: no stored run came from a build in between, whose near
+# matches were off although it contains 27905ca.)
+EXPLORE_BEHAVIOUR_COMMIT=27905ca
 stale_runs() {
   local name
   for name in "$@"; do
@@ -371,10 +375,9 @@ write_document() {
     if [[ -n $stale ]]; then
       echo "Made with a build older than commit $EXPLORE_BEHAVIOUR_COMMIT, the last that changed what"
       echo "every policy's robot does or how runs are scored (see \`scripts/results_document.sh\`;"
-      echo "$EXPLORE_BEHAVIOUR_COMMIT: loop closures farther from the estimate than the search window of"
-      echo "their chain of submaps and loop closures are rejected; it changes only the runs in which"
-      echo "such a match came up, which an older run does not record), so not like-for-like with the"
-      echo "other runs: $stale"
+      echo "$EXPLORE_BEHAVIOUR_COMMIT: the loop-closure search keeps near matches, matches scoring from 0.75"
+      echo "of the minimum score that land within 0.3 m of the estimate, which the explorer had kept"
+      echo "off), so not like-for-like with the other runs: $stale"
       echo
     fi
     tables explore "${EXPLORE[@]}"
