@@ -41,21 +41,15 @@ struct AsIs {
 };
 
 // Sum of the decoded values of a level under 'cells' shifted by (x, y); cells
-// outside count as 'floor'. Cells wholly inside (known from the scan's
-// bounds) skip the per-cell check, the common case near a match.
+// outside count as 'floor'. (Scans wholly inside, the common case near a
+// match, go through SumFlat instead.)
 template <typename T, typename Decode>
 int64_t SumCells(const T* values, int offset, int width, int height,
-                 const std::vector<grid::CellIndex>& cells, bool inside, int x, int y,
-                 int64_t floor, Decode decode) {
+                 const std::vector<grid::CellIndex>& cells, int x, int y, int64_t floor,
+                 Decode decode) {
   int64_t sum = 0;
   const int dx = x + offset;
   const int dy = y + offset;
-  if (inside) {
-    for (const grid::CellIndex& cell : cells) {
-      sum += decode(values[static_cast<size_t>(cell.y + dy) * width + (cell.x + dx)]);
-    }
-    return sum;
-  }
   for (const grid::CellIndex& cell : cells) {
     const int sx = cell.x + dx;
     const int sy = cell.y + dy;
@@ -65,6 +59,25 @@ int64_t SumCells(const T* values, int offset, int width, int height,
                : decode(values[static_cast<size_t>(sy) * width + sx]);
   }
   return sum;
+}
+
+// Sum of the decoded values at values[base + f] for each flat cell index f
+// (all within the array: the caller checked the scan's bounds).
+template <typename T, typename Decode>
+int64_t SumFlat(const T* values, int64_t base, const std::vector<int32_t>& flat, Decode decode) {
+  int64_t sum = 0;
+  for (const int32_t f : flat) sum += decode(values[static_cast<size_t>(base + f)]);
+  return sum;
+}
+
+// The scan's cells as flat indices into a level 'width' cells wide.
+const std::vector<int32_t>& FlatCells(std::vector<int32_t>& flat,
+                                      const std::vector<grid::CellIndex>& cells, int width) {
+  if (flat.empty()) {
+    flat.reserve(cells.size());
+    for (const grid::CellIndex& cell : cells) flat.push_back(cell.y * width + cell.x);
+  }
+  return flat;
 }
 
 constexpr int kMidValue = (1 + grid::kMaxValue) / 2;  // decodes to 0.5
@@ -177,17 +190,26 @@ FastCorrelativeScanMatcher::FastCorrelativeScanMatcher(
 
 int64_t FastCorrelativeScanMatcher::Score(int depth, const DiscreteScan& scan, int x, int y) const {
   if (depth == 0) {
-    const bool inside = scan.min_x + x >= 0 && scan.min_y + y >= 0 &&
-                        scan.max_x + x < limits_.width() && scan.max_y + y < limits_.height();
-    return SumCells(grid_->values().data(), 0, limits_.width(), limits_.height(), scan.cells,
-                    inside, x, y, kFloorValue, DecodeRaw());
+    const int width = limits_.width();
+    const bool inside = scan.min_x + x >= 0 && scan.min_y + y >= 0 && scan.max_x + x < width &&
+                        scan.max_y + y < limits_.height();
+    if (inside) {
+      return SumFlat(grid_->values().data(), static_cast<int64_t>(y) * width + x,
+                     FlatCells(scan.flat_cells[0], scan.cells, width), DecodeRaw());
+    }
+    return SumCells(grid_->values().data(), 0, width, limits_.height(), scan.cells, x, y,
+                    kFloorValue, DecodeRaw());
   }
   const PrecomputedGrid<uint8_t>& level = coarse_[depth - 1];
   const bool inside = scan.min_x + x + level.offset >= 0 && scan.min_y + y + level.offset >= 0 &&
                       scan.max_x + x + level.offset < level.width &&
                       scan.max_y + y + level.offset < level.height;
-  const int64_t sum = SumCells(level.values.data(), level.offset, level.width, level.height,
-                               scan.cells, inside, x, y, kCoarseFloor, AsIs());
+  const int64_t sum =
+      inside ? SumFlat(level.values.data(),
+                       static_cast<int64_t>(y + level.offset) * level.width + x + level.offset,
+                       FlatCells(scan.flat_cells[depth], scan.cells, level.width), AsIs())
+             : SumCells(level.values.data(), level.offset, level.width, level.height, scan.cells, x,
+                        y, kCoarseFloor, AsIs());
   // Back to level 0 units, rounded up so the bound stays a bound.
   return (sum * grid::kMaxValue + kMaxCoarse - 1) / kMaxCoarse;
 }
@@ -237,6 +259,7 @@ std::optional<ScanMatchResult> FastCorrelativeScanMatcher::Search(
     const double angle = initial_pose_estimate.theta() + k * angle_step;
     const geometry::Rigid2d pose(initial_pose_estimate.translation(), angle);
     DiscreteScan& scan = scans.emplace_back();
+    scan.flat_cells.resize(coarse_.size() + 1);
     scan.cells.reserve(points.size());
     for (const Eigen::Vector2d& p : points) scan.cells.push_back(limits_.CellContaining(pose * p));
     scan.min_x = scan.max_x = scan.cells.front().x;
@@ -255,9 +278,11 @@ std::optional<ScanMatchResult> FastCorrelativeScanMatcher::Search(
   const int top_step = 1 << top;
 
   // Returns the best candidate with a sum of at least 'min_sum' outside
-  // 'exclusion' (none if radius < 0).
-  const auto best_candidate = [&](int64_t min_sum,
-                                  const Exclusion& exclusion) -> std::optional<Candidate> {
+  // 'exclusion' (none if radius < 0); with 'any_will_do', the first such
+  // candidate found, which is all the ambiguity test asks (whether one exists)
+  // and saves exploring the rest of the tree for a better one.
+  const auto best_candidate = [&](int64_t min_sum, const Exclusion& exclusion,
+                                  bool any_will_do) -> std::optional<Candidate> {
     const double radius_sq = exclusion.radius * exclusion.radius;
     const auto excluded = [&](int x, int y) {
       const double dx = x - exclusion.x;
@@ -284,6 +309,7 @@ std::optional<ScanMatchResult> FastCorrelativeScanMatcher::Search(
     std::sort(roots.begin(), roots.end(), by_bound);
 
     std::optional<Candidate> best;
+    bool done = false;
     // Depth-first, best bound first (Hess et al. 2016, algorithm 3): a node is
     // expanded only if its bound beats both the threshold and the best leaf.
     const auto branch = [&](auto&& self, const Candidate* candidates, size_t count,
@@ -295,6 +321,8 @@ std::optional<ScanMatchResult> FastCorrelativeScanMatcher::Search(
         if (depth == 0) {
           if (excluded(c.x, c.y)) continue;
           best = c;
+          done = any_will_do;
+          if (done) return;
           continue;  // sorted: later siblings cannot beat this leaf
         }
         const int half = 1 << (depth - 1);
@@ -317,6 +345,7 @@ std::optional<ScanMatchResult> FastCorrelativeScanMatcher::Search(
           }
         }
         self(self, children.data(), num_children, depth - 1);
+        if (done) return;
       }
     };
     branch(branch, roots.data(), roots.size(), top);
@@ -334,7 +363,7 @@ std::optional<ScanMatchResult> FastCorrelativeScanMatcher::Search(
   };
 
   const std::optional<Candidate> best =
-      best_candidate(min_sum_for(min_score), Exclusion{0, 0, -1.0});
+      best_candidate(min_sum_for(min_score), Exclusion{0, 0, -1.0}, /*any_will_do=*/false);
   if (!best.has_value()) return std::nullopt;
   const Eigen::Vector2d translation =
       initial_pose_estimate.translation() + resolution * Eigen::Vector2d(best->x, best->y);
@@ -342,7 +371,8 @@ std::optional<ScanMatchResult> FastCorrelativeScanMatcher::Search(
                                ScoreOfSum(best->sum, points.size())};
   if (check_ambiguity && options_.ambiguity_radius_m > 0.0) {
     const Exclusion around_best{best->x, best->y, options_.ambiguity_radius_m / resolution};
-    if (best_candidate(min_sum_for(result.score - options_.ambiguity_score_margin), around_best)) {
+    if (best_candidate(min_sum_for(result.score - options_.ambiguity_score_margin), around_best,
+                       /*any_will_do=*/true)) {
       if (ambiguous != nullptr) *ambiguous = result;
       return std::nullopt;  // a distant pose fits about as well: ambiguous
     }

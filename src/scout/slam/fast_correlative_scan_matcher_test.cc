@@ -17,18 +17,19 @@ namespace {
 
 using geometry::Rigid2d;
 
-// The best score over the candidate set documented in the header, by
-// exhaustive search, with unknown and outside cells at kMinProbability.
-double BruteForceBestScore(const grid::ProbabilityGrid& grid, const Rigid2d& initial,
-                           const PointCloud& points, double linear_window_m,
-                           double angular_window_rad) {
+// Calls fn(x, y, score) for every candidate of the set documented in the
+// header (x, y: translation offset in cells), by exhaustive search, with
+// unknown and outside cells at kMinProbability.
+template <typename Fn>
+void ForEachCandidate(const grid::ProbabilityGrid& grid, const Rigid2d& initial,
+                      const PointCloud& points, double linear_window_m, double angular_window_rad,
+                      Fn fn) {
   const grid::MapLimits& limits = grid.limits();
   double max_range_m = 0.0;
   for (const Eigen::Vector2d& p : points) max_range_m = std::max(max_range_m, p.norm());
   const double step = AngularSearchStep(max_range_m, limits.resolution());
   const int n = static_cast<int>(std::ceil(angular_window_rad / step));
   const int bound = static_cast<int>(std::ceil(linear_window_m / limits.resolution()));
-  int64_t best_sum = std::numeric_limits<int64_t>::min();
   for (int k = -n; k <= n; ++k) {
     const Rigid2d pose(initial.translation(), initial.theta() + k * step);
     std::vector<grid::CellIndex> cells;
@@ -40,50 +41,113 @@ double BruteForceBestScore(const grid::ProbabilityGrid& grid, const Rigid2d& ini
           const uint16_t v = grid.value({c.x + x, c.y + y});
           sum += v == grid::kUnknownValue ? 1 : v;
         }
-        best_sum = std::max(best_sum, sum);
+        // Probability is linear in the raw value: 1 -> 0.1, 32767 -> 0.9.
+        const double mean_value = static_cast<double>(sum) / static_cast<double>(points.size());
+        fn(x, y, 0.1 + (mean_value - 1.0) * 0.8 / (grid::kMaxValue - 1));
       }
     }
   }
-  // Probability is linear in the raw value: 1 -> 0.1, 32767 -> 0.9.
-  const double mean_value = static_cast<double>(best_sum) / static_cast<double>(points.size());
-  return 0.1 + (mean_value - 1.0) * 0.8 / (grid::kMaxValue - 1);
 }
 
-RC_GTEST_PROP(FastCorrelativeScanMatcherProperty, EqualsBruteForceOnSmallWindows, ()) {
+double BruteForceBestScore(const grid::ProbabilityGrid& grid, const Rigid2d& initial,
+                           const PointCloud& points, double linear_window_m,
+                           double angular_window_rad) {
+  double best = -std::numeric_limits<double>::infinity();
+  ForEachCandidate(grid, initial, points, linear_window_m, angular_window_rad,
+                   [&best](int, int, double score) { best = std::max(best, score); });
+  return best;
+}
+
+// A random small grid (about a third unknown, the rest any probability, so
+// ties are rare but possible), scan and initial pose.
+struct RandomScene {
+  grid::ProbabilityGrid grid;
+  PointCloud points;
+  Rigid2d initial;
+};
+
+RandomScene GenerateScene() {
   const int width = *rc::gen::inRange(1, 24);
   const int height = *rc::gen::inRange(1, 24);
-  const double resolution = 0.1;
-  grid::ProbabilityGrid grid(grid::MapLimits(resolution, {-1.0, -0.5}, width, height));
+  RandomScene scene{
+      grid::ProbabilityGrid(grid::MapLimits(0.1, {-1.0, -0.5}, width, height)), {}, Rigid2d()};
   for (int y = 0; y < height; ++y) {
     for (int x = 0; x < width; ++x) {
-      // About a third unknown; the rest any probability, so ties are rare but possible.
       if (*rc::gen::inRange(0, 3) == 0) continue;
-      grid.SetProbability({x, y}, static_cast<float>(*rc::gen::inRange(100, 901)) / 1000.f);
+      scene.grid.SetProbability({x, y}, static_cast<float>(*rc::gen::inRange(100, 901)) / 1000.f);
     }
   }
   const int num_points = *rc::gen::inRange(1, 12);
-  PointCloud points;
   for (int i = 0; i < num_points; ++i) {
-    points.push_back({*rc::gen::inRange(-150, 151) / 100.0, *rc::gen::inRange(-150, 151) / 100.0});
+    scene.points.push_back(
+        {*rc::gen::inRange(-150, 151) / 100.0, *rc::gen::inRange(-150, 151) / 100.0});
   }
-  const Rigid2d initial(*rc::gen::inRange(-50, 150) / 100.0, *rc::gen::inRange(-50, 150) / 100.0,
-                        *rc::gen::inRange(-314, 315) / 100.0);
+  scene.initial = Rigid2d(*rc::gen::inRange(-50, 150) / 100.0, *rc::gen::inRange(-50, 150) / 100.0,
+                          *rc::gen::inRange(-314, 315) / 100.0);
+  return scene;
+}
+
+RC_GTEST_PROP(FastCorrelativeScanMatcherProperty, EqualsBruteForceOnSmallWindows, ()) {
+  const RandomScene scene = GenerateScene();
   FastCorrelativeScanMatcherOptions options;
   options.linear_search_window_m = *rc::gen::inRange(0, 80) / 100.0;
   options.angular_search_window_rad = *rc::gen::inRange(0, 30) / 100.0;
   options.branch_and_bound_depth = *rc::gen::inRange(1, 6);
   options.ambiguity_radius_m = 0.0;  // brute force knows no ambiguity test
-  const FastCorrelativeScanMatcher matcher(grid, options);
+  const FastCorrelativeScanMatcher matcher(scene.grid, options);
 
-  const double expected = BruteForceBestScore(grid, initial, points, options.linear_search_window_m,
-                                              options.angular_search_window_rad);
-  const std::optional<ScanMatchResult> result = matcher.Match(initial, points, 0.0);
+  const double expected =
+      BruteForceBestScore(scene.grid, scene.initial, scene.points, options.linear_search_window_m,
+                          options.angular_search_window_rad);
+  const std::optional<ScanMatchResult> result = matcher.Match(scene.initial, scene.points, 0.0);
   RC_ASSERT(result.has_value());
   // Distinct sums differ by far more than 1e-12 in score.
   RC_ASSERT(std::abs(result->score - expected) < 1e-12);
   // The threshold is inclusive of the best score and excludes anything above it.
-  RC_ASSERT(matcher.Match(initial, points, expected - 1e-9).has_value());
-  RC_ASSERT(!matcher.Match(initial, points, expected + 1e-9).has_value());
+  RC_ASSERT(matcher.Match(scene.initial, scene.points, expected - 1e-9).has_value());
+  RC_ASSERT(!matcher.Match(scene.initial, scene.points, expected + 1e-9).has_value());
+}
+
+// The ambiguity test stops at the first rival it finds (whether one exists is
+// all it asks): its verdict must be the exhaustive search's, a candidate
+// beyond ambiguity_radius_m of the best scoring within the margin of it.
+RC_GTEST_PROP(FastCorrelativeScanMatcherProperty, AmbiguityEqualsBruteForceOnSmallWindows, ()) {
+  const RandomScene scene = GenerateScene();
+  FastCorrelativeScanMatcherOptions options;
+  options.linear_search_window_m = *rc::gen::inRange(0, 80) / 100.0;
+  options.angular_search_window_rad = *rc::gen::inRange(0, 30) / 100.0;
+  options.branch_and_bound_depth = *rc::gen::inRange(1, 6);
+  options.ambiguity_radius_m = *rc::gen::inRange(1, 40) / 100.0;
+  options.ambiguity_score_margin = *rc::gen::inRange(0, 20) / 100.0;
+  FastCorrelativeScanMatcherOptions blind_options = options;
+  blind_options.ambiguity_radius_m = 0.0;
+  const std::optional<ScanMatchResult> best =
+      FastCorrelativeScanMatcher(scene.grid, blind_options).Match(scene.initial, scene.points, 0.0);
+  RC_ASSERT(best.has_value());
+  const double resolution = scene.grid.limits().resolution();
+  const Eigen::Vector2d best_offset =
+      (best->pose.translation() - scene.initial.translation()) / resolution;
+  const double radius_cells = options.ambiguity_radius_m / resolution;
+  const double threshold = best->score - options.ambiguity_score_margin;
+  bool rival = false;
+  bool borderline = false;
+  ForEachCandidate(scene.grid, scene.initial, scene.points, options.linear_search_window_m,
+                   options.angular_search_window_rad, [&](int x, int y, double score) {
+                     const double dx = x - std::round(best_offset.x());
+                     const double dy = y - std::round(best_offset.y());
+                     if (dx * dx + dy * dy <= radius_cells * radius_cells) return;
+                     borderline |= std::abs(score - threshold) < 1e-9;
+                     rival |= score >= threshold;
+                   });
+  RC_PRE(!borderline);  // rounding would decide, not the search
+  std::optional<ScanMatchResult> ambiguous;
+  const std::optional<ScanMatchResult> result =
+      FastCorrelativeScanMatcher(scene.grid, options)
+          .Match(scene.initial, scene.points, 0.0, options.linear_search_window_m,
+                 options.angular_search_window_rad, &ambiguous);
+  RC_ASSERT(result.has_value() == !rival);
+  RC_ASSERT(ambiguous.has_value() == rival);
+  if (rival) RC_ASSERT(ambiguous->pose.translation() == best->pose.translation());
 }
 
 TEST(FastCorrelativeScanMatcherTest, FindsScanFarFromInitialEstimateInRoom) {
