@@ -87,12 +87,18 @@ RandomScene GenerateScene() {
   return scene;
 }
 
-RC_GTEST_PROP(FastCorrelativeScanMatcherProperty, EqualsBruteForceOnSmallWindows, ()) {
-  const RandomScene scene = GenerateScene();
+// Random windows small enough for brute force, and a random tree depth.
+FastCorrelativeScanMatcherOptions GenerateSmallWindows() {
   FastCorrelativeScanMatcherOptions options;
   options.linear_search_window_m = *rc::gen::inRange(0, 80) / 100.0;
   options.angular_search_window_rad = *rc::gen::inRange(0, 30) / 100.0;
   options.branch_and_bound_depth = *rc::gen::inRange(1, 6);
+  return options;
+}
+
+RC_GTEST_PROP(FastCorrelativeScanMatcherProperty, EqualsBruteForceOnSmallWindows, ()) {
+  const RandomScene scene = GenerateScene();
+  FastCorrelativeScanMatcherOptions options = GenerateSmallWindows();
   options.ambiguity_radius_m = 0.0;  // brute force knows no ambiguity test
   const FastCorrelativeScanMatcher matcher(scene.grid, options);
 
@@ -113,10 +119,7 @@ RC_GTEST_PROP(FastCorrelativeScanMatcherProperty, EqualsBruteForceOnSmallWindows
 // beyond ambiguity_radius_m of the best scoring within the margin of it.
 RC_GTEST_PROP(FastCorrelativeScanMatcherProperty, AmbiguityEqualsBruteForceOnSmallWindows, ()) {
   const RandomScene scene = GenerateScene();
-  FastCorrelativeScanMatcherOptions options;
-  options.linear_search_window_m = *rc::gen::inRange(0, 80) / 100.0;
-  options.angular_search_window_rad = *rc::gen::inRange(0, 30) / 100.0;
-  options.branch_and_bound_depth = *rc::gen::inRange(1, 6);
+  FastCorrelativeScanMatcherOptions options = GenerateSmallWindows();
   options.ambiguity_radius_m = *rc::gen::inRange(1, 40) / 100.0;
   options.ambiguity_score_margin = *rc::gen::inRange(0, 20) / 100.0;
   FastCorrelativeScanMatcherOptions blind_options = options;
