@@ -41,15 +41,26 @@ struct AsIs {
 };
 
 // Sum of the decoded values of a level under 'cells' shifted by (x, y); cells
-// outside count as 'floor'. (Scans wholly inside, the common case near a
-// match, go through SumFlat instead.)
+// outside count as 'floor'. Cells wholly inside (known from the scan's
+// bounds), the common case near a match, are read through 'flat' (the cells
+// as y * width + x, made here on first use): a shift then adds one offset per
+// cell instead of a multiply, and no cell needs the bounds check.
 template <typename T, typename Decode>
 int64_t SumCells(const T* values, int offset, int width, int height,
-                 const std::vector<grid::CellIndex>& cells, int x, int y, int64_t floor,
-                 Decode decode) {
+                 const std::vector<grid::CellIndex>& cells, std::vector<int32_t>& flat, bool inside,
+                 int x, int y, int64_t floor, Decode decode) {
   int64_t sum = 0;
   const int dx = x + offset;
   const int dy = y + offset;
+  if (inside) {
+    if (flat.empty()) {
+      flat.reserve(cells.size());
+      for (const grid::CellIndex& cell : cells) flat.push_back(cell.y * width + cell.x);
+    }
+    const int64_t base = int64_t{dy} * width + dx;
+    for (const int32_t f : flat) sum += decode(values[static_cast<size_t>(base + f)]);
+    return sum;
+  }
   for (const grid::CellIndex& cell : cells) {
     const int sx = cell.x + dx;
     const int sy = cell.y + dy;
@@ -59,25 +70,6 @@ int64_t SumCells(const T* values, int offset, int width, int height,
                : decode(values[static_cast<size_t>(sy) * width + sx]);
   }
   return sum;
-}
-
-// Sum of the decoded values at values[base + f] for each flat cell index f
-// (all within the array: the caller checked the scan's bounds).
-template <typename T, typename Decode>
-int64_t SumFlat(const T* values, int64_t base, const std::vector<int32_t>& flat, Decode decode) {
-  int64_t sum = 0;
-  for (const int32_t f : flat) sum += decode(values[static_cast<size_t>(base + f)]);
-  return sum;
-}
-
-// The scan's cells as flat indices into a level 'width' cells wide.
-const std::vector<int32_t>& FlatCells(std::vector<int32_t>& flat,
-                                      const std::vector<grid::CellIndex>& cells, int width) {
-  if (flat.empty()) {
-    flat.reserve(cells.size());
-    for (const grid::CellIndex& cell : cells) flat.push_back(cell.y * width + cell.x);
-  }
-  return flat;
 }
 
 constexpr int kMidValue = (1 + grid::kMaxValue) / 2;  // decodes to 0.5
@@ -190,26 +182,18 @@ FastCorrelativeScanMatcher::FastCorrelativeScanMatcher(
 
 int64_t FastCorrelativeScanMatcher::Score(int depth, const DiscreteScan& scan, int x, int y) const {
   if (depth == 0) {
-    const int width = limits_.width();
-    const bool inside = scan.min_x + x >= 0 && scan.min_y + y >= 0 && scan.max_x + x < width &&
-                        scan.max_y + y < limits_.height();
-    if (inside) {
-      return SumFlat(grid_->values().data(), static_cast<int64_t>(y) * width + x,
-                     FlatCells(scan.flat_cells[0], scan.cells, width), DecodeRaw());
-    }
-    return SumCells(grid_->values().data(), 0, width, limits_.height(), scan.cells, x, y,
-                    kFloorValue, DecodeRaw());
+    const bool inside = scan.min_x + x >= 0 && scan.min_y + y >= 0 &&
+                        scan.max_x + x < limits_.width() && scan.max_y + y < limits_.height();
+    return SumCells(grid_->values().data(), 0, limits_.width(), limits_.height(), scan.cells,
+                    scan.flat_cells[0], inside, x, y, kFloorValue, DecodeRaw());
   }
   const PrecomputedGrid<uint8_t>& level = coarse_[depth - 1];
   const bool inside = scan.min_x + x + level.offset >= 0 && scan.min_y + y + level.offset >= 0 &&
                       scan.max_x + x + level.offset < level.width &&
                       scan.max_y + y + level.offset < level.height;
   const int64_t sum =
-      inside ? SumFlat(level.values.data(),
-                       static_cast<int64_t>(y + level.offset) * level.width + x + level.offset,
-                       FlatCells(scan.flat_cells[depth], scan.cells, level.width), AsIs())
-             : SumCells(level.values.data(), level.offset, level.width, level.height, scan.cells, x,
-                        y, kCoarseFloor, AsIs());
+      SumCells(level.values.data(), level.offset, level.width, level.height, scan.cells,
+               scan.flat_cells[depth], inside, x, y, kCoarseFloor, AsIs());
   // Back to level 0 units, rounded up so the bound stays a bound.
   return (sum * grid::kMaxValue + kMaxCoarse - 1) / kMaxCoarse;
 }
@@ -321,8 +305,10 @@ std::optional<ScanMatchResult> FastCorrelativeScanMatcher::Search(
         if (depth == 0) {
           if (excluded(c.x, c.y)) continue;
           best = c;
-          done = any_will_do;
-          if (done) return;
+          if (any_will_do) {
+            done = true;
+            return;
+          }
           continue;  // sorted: later siblings cannot beat this leaf
         }
         const int half = 1 << (depth - 1);

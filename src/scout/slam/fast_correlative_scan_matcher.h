@@ -100,9 +100,8 @@ class FastCorrelativeScanMatcher {
   struct DiscreteScan {
     std::vector<grid::CellIndex> cells;
     int min_x = 0, max_x = 0, min_y = 0, max_y = 0;
-    // Per depth, each cell as y * width + x of that level, made on the first
-    // score there that lies wholly inside it: a shift then adds one offset to
-    // each, where the (y + dy) * width + x + dx per cell cost a multiply.
+    // Per depth, the cells as flat indices into that level (see SumCells),
+    // made by the first score there that lies wholly inside it.
     mutable std::vector<std::vector<int32_t>> flat_cells;
   };
   struct Candidate;
