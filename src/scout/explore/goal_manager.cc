@@ -174,66 +174,145 @@ double GoalManager::DistanceToFrontier(const Eigen::Vector2d& goal,
 }
 
 GoalManager::Reach GoalManager::ReachFrom(const Eigen::Vector2d& robot,
-                                          const std::vector<Eigen::Vector2d>& frontier) {
+                                          const std::vector<Eigen::Vector2d>& frontier,
+                                          double settle_m) {
+  const double snap = map_->options().goal_snap_radius_m;
+  // Settles the field until it reaches a frontier point or every cell, from
+  // 'settle_m' on, doubling (the nearest frontier is usually near).
+  const auto reaches_frontier = [&](PathDistanceField& field) {
+    for (double d = settle_m;; d = std::max(2.0 * d, kFirstSettle_m)) {
+      field.SettleUpTo(d);
+      for (const Eigen::Vector2d& p : frontier) {
+        if (field.NearestReached(p, snap)) return true;
+      }
+      if (field.complete()) return false;
+    }
+  };
   Reach reach;
   reach.start.emplace(*map_, robot);
-  reach.field.emplace(*map_, *reach.start);
+  reach.field.emplace(*map_, *reach.start, settle_m);
   counters_.escapes += reach.start->escaped();
   if (reach.start->escaped() || frontier.empty()) return reach;
-  const double snap = map_->options().goal_snap_radius_m;
-  for (const Eigen::Vector2d& p : frontier) {
-    if (reach.field->NearestReached(p, snap)) return reach;
-  }
+  if (reaches_frontier(*reach.field)) return reach;
   // Boxed in: the robot's cell is traversable but its component reaches no
   // frontier (a pocket that even narrow passages cannot leave). Leave it
   // wherever the disc keeps the clearance it has.
   reach.start.emplace(*map_, robot, /*escape=*/true);
-  reach.field.emplace(*map_, *reach.start);
+  reach.field.emplace(*map_, *reach.start, settle_m);
   ++counters_.escapes;
   return reach;
 }
 
-GoalManager::Ranking GoalManager::ReachAndRank(const ExploreInput& in,
-                                               const std::vector<Eigen::Vector2d>& frontier) {
-  PolicyInput pi;
+std::optional<double> GoalManager::ScoreNear(const std::vector<GoalCandidate>& ranked,
+                                             const Eigen::Vector2d& goal) const {
+  std::optional<double> score;
+  const double match2 = options_.goal_match_radius_m * options_.goal_match_radius_m;
+  for (const GoalCandidate& c : ranked) {
+    if ((c.position - goal).squaredNorm() > match2) continue;
+    if (!score || c.score > *score) score = c.score;
+  }
+  return score;
+}
+
+void GoalManager::ReachAndRank(const ExploreInput& in, const std::vector<Eigen::Vector2d>& frontier,
+                               RankFor use, Ranking& ranking) {
+  PolicyInput& pi = ranking.input;
   pi.map = map_.get();
   pi.frontier = &frontier;
   pi.robot = in.robot_pose.translation();
   if (goal_) pi.current_goal = Resolve(*goal_, in.submaps);
   // Reached goals are avoided like failed ones until the map around them
   // changes: a frontier that stays after arrival cannot be seen from there.
-  std::vector<Eigen::Vector2d> blacklisted = failed_.Blacklisted(in.submaps);
+  ranking.blacklisted = failed_.Blacklisted(in.submaps);
   const std::vector<Eigen::Vector2d> visited = visited_.Blacklisted(in.submaps);
-  blacklisted.insert(blacklisted.end(), visited.begin(), visited.end());
-  pi.avoid = &blacklisted;
+  ranking.blacklisted.insert(ranking.blacklisted.end(), visited.begin(), visited.end());
+  pi.avoid = &ranking.blacklisted;
   pi.avoid_radius_m = options_.failed_goals.blacklist_radius_m;
+  // How far the field is settled first: everything when scores are not
+  // bounded by path cost; nothing beyond the first frontier for policies that
+  // rank without it; else what a candidate can score above its path cost, a
+  // little more, and against the current goal a detour's worth of the way
+  // to it.
+  const bool distances = policy_->needs_path_distances();
+  ranking.above_cost_m = distances ? policy_->ScoreAbovePathCost(*map_) : std::nullopt;
+  if (use == RankFor::kAgainstCurrentGoal && !pi.current_goal) ranking.above_cost_m.reset();
+  double settle_m = distances ? std::numeric_limits<double>::infinity() : 0.0;
+  if (ranking.above_cost_m) {
+    settle_m = *ranking.above_cost_m + kFirstSettle_m;
+    if (use == RankFor::kAgainstCurrentGoal) {
+      settle_m += kDetourFactor * (*pi.current_goal - pi.robot).norm();
+    }
+  }
   // The path distances cover the whole map, and so does the scout policy's
   // clustering (mean-shift, connectivity split), which needs none: in the
   // museum each took a tenth to a quarter of the wall time. Both only read
   // the planning map and the frontier, so they run side by side.
-  Ranking ranking;
-  std::any prepared;
-  common::ParallelInvoke([&] { prepared = policy_->Prepare(pi); },
-                         [&] { ranking.reach = ReachFrom(pi.robot, frontier); });
-  pi.distances = &*ranking.reach.field;
-  pi.prepared = &prepared;
-  for (const GoalCandidate& c : policy_->Rank(pi)) {
-    if (!failed_.IsNear(c.position, blacklisted)) ranking.candidates.push_back(c);
+  common::ParallelInvoke([&] { ranking.prepared = policy_->Prepare(pi); },
+                         [&] { ranking.reach = ReachFrom(pi.robot, frontier, settle_m); });
+  pi.distances = distances ? &*ranking.reach.field : nullptr;
+  pi.prepared = &ranking.prepared;
+  RankSettled(ranking);
+  if (use == RankFor::kAgainstCurrentGoal) {
+    // Every candidate not ranked yet scores at most above_cost − settled_m:
+    // settled so far that it can neither raise the current goal's score nor
+    // beat it. Without a candidate near the goal yet, one may still come.
+    while (ranking.above_cost_m) {
+      const PathDistanceField& field = *ranking.reach.field;
+      const std::optional<double> current = ScoreNear(ranking.candidates, *pi.current_goal);
+      const double needed_m =
+          current ? *ranking.above_cost_m - *current + kScoreSlack : 2.0 * field.settled_m();
+      if (current && field.settled_m() >= needed_m) break;
+      ranking.reach.field->SettleUpTo(std::max(needed_m, field.settled_m() + kFirstSettle_m));
+      RankSettled(ranking);
+    }
+  }
+}
+
+void GoalManager::RankSettled(Ranking& ranking) {
+  ranking.candidates.clear();
+  for (const GoalCandidate& c : policy_->Rank(ranking.input)) {
+    if (!failed_.IsNear(c.position, ranking.blacklisted)) ranking.candidates.push_back(c);
+  }
+  const PathDistanceField* field = ranking.input.distances;
+  if (field != nullptr && field->complete()) ranking.above_cost_m.reset();
+  ranking.sure = ranking.candidates.size();
+  if (ranking.above_cost_m) {
+    // Best first: the candidates scoring more than any candidate beyond
+    // settled_m can come first in the complete ranking too.
+    const double beyond = *ranking.above_cost_m - field->settled_m() + kScoreSlack;
+    ranking.sure = 0;
+    while (ranking.sure < ranking.candidates.size() &&
+           ranking.candidates[ranking.sure].score > beyond) {
+      ++ranking.sure;
+    }
   }
   candidates_.clear();
   for (const GoalCandidate& c : ranking.candidates) candidates_.push_back(c.position);
-  return ranking;
 }
 
-GoalManager::Selection GoalManager::PlanFirst(const std::vector<GoalCandidate>& candidates,
-                                              const ExploreInput& in, const StartRegion& start,
-                                              bool fall_back) {
+bool GoalManager::MoreCandidates(Ranking& ranking) {
+  if (!ranking.above_cost_m) return false;
+  PathDistanceField& field = *ranking.reach.field;
+  // Far enough for the best candidate not sure yet, if one is ranked.
+  double needed_m = 2.0 * field.settled_m();
+  if (ranking.sure < ranking.candidates.size()) {
+    needed_m = *ranking.above_cost_m - ranking.candidates[ranking.sure].score + 2.0 * kScoreSlack;
+  }
+  field.SettleUpTo(std::max(needed_m, field.settled_m() + kFirstSettle_m));
+  RankSettled(ranking);
+  return true;
+}
+
+GoalManager::Selection GoalManager::PlanFirst(
+    const std::function<const GoalCandidate*(size_t)>& candidate_at, const ExploreInput& in,
+    const StartRegion& start, bool fall_back) {
   Selection sel;
-  sel.none_left = candidates.empty();
+  sel.none_left = candidate_at(0) == nullptr;
   Selection contradicted;
   const std::vector<Eigen::Vector2d> returns = CheckedReturns(in);
   int attempts = 0;
-  for (const GoalCandidate& c : candidates) {
+  for (size_t i = 0; const GoalCandidate* next = candidate_at(i); ++i) {
+    const GoalCandidate c = *next;
     if (attempts++ >= options_.max_plan_attempts) break;
     // A candidate near one that failed during this very loop shares its fate.
     if (failed_.IsNear(c.position, failed_.Blacklisted(in.submaps))) continue;
@@ -292,8 +371,16 @@ bool GoalManager::ContradictedByScan(const PlannedPath& path,
 GoalManager::Selection GoalManager::SelectAndPlan(const ExploreInput& in) {
   ++counters_.selections;
   const std::vector<Eigen::Vector2d> frontier = FrontierInBoundary(*in.frontier);
-  const Ranking ranking = ReachAndRank(in, frontier);
-  return PlanFirst(ranking.candidates, in, *ranking.reach.start, /*fall_back=*/true);
+  Ranking ranking;
+  ReachAndRank(in, frontier, RankFor::kBestFirst, ranking);
+  // The i-th candidate of the complete ranking: settle farther until it is
+  // sure (or there is none).
+  const auto candidate_at = [&](size_t i) -> const GoalCandidate* {
+    while (i >= ranking.sure && MoreCandidates(ranking)) {
+    }
+    return i < ranking.sure ? &ranking.candidates[i] : nullptr;
+  };
+  return PlanFirst(candidate_at, in, *ranking.reach.start, /*fall_back=*/true);
 }
 
 void GoalManager::BeginDriving(const Eigen::Vector2d& goal, const PlannedPath& path,
@@ -416,15 +503,12 @@ void GoalManager::Replan(const ExploreInput& in) {
     return EndGoal(ExploreState::kPlanning);
   }
   ++counters_.selections;
-  const Ranking ranking = ReachAndRank(in, frontier);
+  Ranking ranking;
+  ReachAndRank(in, frontier, RankFor::kAgainstCurrentGoal, ranking);
   const std::vector<GoalCandidate>& ranked = ranking.candidates;
   // The current goal's score: its component's best candidate.
-  std::optional<double> current_score;
+  const std::optional<double> current_score = ScoreNear(ranked, current);
   const double match2 = options_.goal_match_radius_m * options_.goal_match_radius_m;
-  for (const GoalCandidate& c : ranked) {
-    if ((c.position - current).squaredNorm() > match2) continue;
-    if (!current_score || c.score > *current_score) current_score = c.score;
-  }
   if (current_score) {
     std::vector<GoalCandidate> better;
     for (const GoalCandidate& c : ranked) {
@@ -435,7 +519,8 @@ void GoalManager::Replan(const ExploreInput& in) {
     }
     if (!better.empty()) {
       // Only for a way the scan does not contradict.
-      Selection sel = PlanFirst(better, in, *ranking.reach.start, /*fall_back=*/false);
+      const auto better_at = [&](size_t i) { return i < better.size() ? &better[i] : nullptr; };
+      Selection sel = PlanFirst(better_at, in, *ranking.reach.start, /*fall_back=*/false);
       if (sel.goal) {
         ++counters_.goals_superseded;
         return BeginDriving(*sel.goal, *sel.path, in, ExploreState::kDriving, /*new_goal=*/true);

@@ -2,6 +2,7 @@
 #define SCOUT_EXPLORE_GOAL_MANAGER_H_
 
 #include <Eigen/Core>
+#include <any>
 #include <functional>
 #include <limits>
 #include <memory>
@@ -264,7 +265,9 @@ struct ExploreStatus {
   std::optional<Eigen::Vector2d> target;
   std::vector<Eigen::Vector2d> path;  // global, for display
   std::vector<Eigen::Vector2d> blacklisted;
-  // The goal candidates of the latest selection, best first (global).
+  // The goal candidates of the latest selection, best first (global): those
+  // ranked so far, as path distances are settled only as far as the
+  // selection or re-ranking needed them.
   std::vector<Eigen::Vector2d> candidates;
   // Frontier points (inside the boundary) left when no goal was: nonzero in
   // kFinished means exploration gave up on them rather than completed.
@@ -333,22 +336,65 @@ class GoalManager {
   void RefreshMap(const ExploreInput& input);
   // Starts at the robot (leaving the band if it stands in it); when no
   // frontier point is reachable from there the robot is boxed in, and the
-  // search escapes even from a traversable cell.
-  Reach ReachFrom(const Eigen::Vector2d& robot, const std::vector<Eigen::Vector2d>& frontier);
+  // search escapes even from a traversable cell. The field is settled to
+  // 'settle_m' at least, and further until it reaches a frontier point (or
+  // every cell).
+  Reach ReachFrom(const Eigen::Vector2d& robot, const std::vector<Eigen::Vector2d>& frontier,
+                  double settle_m);
   // ReachFrom the robot, and the policy's candidates that are not
   // blacklisted, best first. The policy's work that needs no path distances
   // runs on another thread while ReachFrom computes them.
+  //
+  // In the museum the complete path distance field (millions of cells, at
+  // every re-ranking, once per second while driving) took half of a run's
+  // wall time, so the field is settled only as far as the use needs, for
+  // policies whose scores fall with path cost (ScoreAbovePathCost; a
+  // candidate beyond a path distance L scores below that bound minus L):
+  // - kBestFirst (goal selection): candidates[0, sure) are the complete
+  //   ranking's first ones, and MoreCandidates settles farther for more;
+  // - kAgainstCurrentGoal (re-ranking while driving): the candidates that can
+  //   score more than the current goal's score (its best candidate within
+  //   goal_match_radius_m), and that score, are there.
+  // The baselines get no field (they rank without path distances). The
+  // results are those of the complete field, decision for decision.
+  enum class RankFor { kBestFirst, kAgainstCurrentGoal };
   struct Ranking {
     Reach reach;
     std::vector<GoalCandidate> candidates;
+    size_t sure = 0;
+    // What ranking again needs (PolicyInput points into it: not movable).
+    PolicyInput input;
+    std::vector<Eigen::Vector2d> blacklisted;
+    std::any prepared;
+    std::optional<double> above_cost_m;  // set while the field may be partial
+    Ranking() = default;
+    Ranking(const Ranking&) = delete;
+    Ranking& operator=(const Ranking&) = delete;
   };
-  Ranking ReachAndRank(const ExploreInput& input, const std::vector<Eigen::Vector2d>& frontier);
+  void ReachAndRank(const ExploreInput& input, const std::vector<Eigen::Vector2d>& frontier,
+                    RankFor use, Ranking& ranking);
+  // Ranks from the field as settled now (and updates sure).
+  void RankSettled(Ranking& ranking);
+  // Settles the field farther, to make the next candidate sure, and ranks
+  // again; false when it was complete.
+  bool MoreCandidates(Ranking& ranking);
+  // The best score of the candidates within goal_match_radius_m of 'goal'.
+  std::optional<double> ScoreNear(const std::vector<GoalCandidate>& ranked,
+                                  const Eigen::Vector2d& goal) const;
   // Plans to the candidates in order (at most max_plan_attempts) and returns
   // the first with a plan that the latest scan does not contradict (scan
   // check), or else, with 'fall_back', the first with a plan; candidates
-  // without one are blacklisted.
-  Selection PlanFirst(const std::vector<GoalCandidate>& candidates, const ExploreInput& input,
-                      const StartRegion& start, bool fall_back);
+  // without one are blacklisted. candidate_at(i) is the i-th candidate, null
+  // after the last.
+  Selection PlanFirst(const std::function<const GoalCandidate*(size_t)>& candidate_at,
+                      const ExploreInput& input, const StartRegion& start, bool fall_back);
+  // The first extent of a partial path distance field (metres), and the
+  // factor on the straight distance to the goal that the first extent of a
+  // re-ranking allows for the path's detours (more is settled when needed).
+  static constexpr double kFirstSettle_m = 2.0;
+  static constexpr double kDetourFactor = 1.5;
+  // Scores summed in another order may differ in the last bits.
+  static constexpr double kScoreSlack = 1e-6;
   // stand_off_unknown_margin_m for a policy that keeps it, else 0.
   double StandOffUnknownMarginM() const;
   // The latest scan's returns in the global frame when the scan check is on

@@ -43,6 +43,14 @@ class ScoutPolicy : public GoalPolicy {
   std::any Prepare(const PolicyInput& in) const override {
     return PartitionFrontier(*in.map, Avoiding(in), options_);
   }
+  // Revenue = info_multiplier · gain − path cost, the gain (times the
+  // hysteresis gain near the current goal) being unknown area in the square
+  // of cells InfoGain scans. With tours the score is a tour length instead.
+  std::optional<double> ScoreAbovePathCost(const PlanningMap& map) const override {
+    if (options_.tour_points >= 2) return std::nullopt;
+    return options_.info_multiplier * std::max(1.0, options_.hysteresis_gain) *
+           MaxInfoGainM2(map.limits().resolution(), options_);
+  }
   std::vector<GoalCandidate> Rank(const PolicyInput& in) const override {
     const FrontierPartition* prepared =
         in.prepared ? std::any_cast<FrontierPartition>(in.prepared) : nullptr;

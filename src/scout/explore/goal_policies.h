@@ -83,6 +83,14 @@ class GoalPolicy {
   virtual std::any Prepare(const PolicyInput& /*input*/) const { return {}; }
   // Returns goals, best first.
   virtual std::vector<GoalCandidate> Rank(const PolicyInput& input) const = 0;
+  // For policies whose every candidate scores at most this much more than
+  // minus its path distance (metres): a candidate beyond a path distance L
+  // then scores below bound − L, so a ranking from a field settled to L
+  // holds every candidate that can score more. Nothing when scores are not
+  // bounded so (or need no path distances).
+  virtual std::optional<double> ScoreAbovePathCost(const PlanningMap& /*map*/) const {
+    return std::nullopt;
+  }
 };
 
 // The selectable names: scout, nearest, explore-lite, meanshift-centres.

@@ -1,6 +1,7 @@
 #include "scout/explore/goal_policies.h"
 
 #include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
 
 #include "scout/explore/test_maps.h"
 
@@ -105,6 +106,84 @@ TEST(GoalPoliciesTest, ExploreLiteGoesToTheCentroidOfTheLargestSegmentEvenInAWal
   ASSERT_EQ(segments.size(), 2u);
   EXPECT_EQ(segments[0].cells, 17);
   EXPECT_NEAR(goals[0].score, -(1e-3 * segments[0].min_distance_m - 1.7), 1e-9);
+}
+
+// The goal manager re-ranks while driving from a field settled only so far
+// (GoalManager::ReachAndRank): every candidate missing from that ranking must
+// lie farther and score at most ScoreAbovePathCost − settled_m(), and the
+// candidates it has must be the complete ranking's, with the same scores and
+// in the same order. Random rooms of free, unknown and occupied cells.
+RC_GTEST_PROP(GoalPoliciesProperty, RankingFromAPartialFieldMissesOnlyCandidatesThatScoreLess, ()) {
+  const int w = *rc::gen::inRange(6, 30), h = *rc::gen::inRange(6, 30);
+  MapBuilder b(w, h, 0.1, grid::CellState::kFree);
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      const int draw = *rc::gen::inRange(0, 100);
+      if (draw < 15) b.Wall(x, y, x, y);
+      if (draw >= 85) b.Fill(x, y, x, y, grid::CellState::kUnknown);
+    }
+  }
+  const grid::CellIndex r{*rc::gen::inRange(0, w), *rc::gen::inRange(0, h)};
+  b.Free(r.x, r.y, r.x, r.y);
+  const std::vector<Eigen::Vector2d> frontier = b.FrontierPoints();
+  RC_PRE(!frontier.empty());
+  GoalPolicyOptions o;
+  o.navigation.info_radius_m = *rc::gen::inRange(0, 8) * 0.1;
+  o.navigation.info_visible_range_m = *rc::gen::element(0.0, 0.5);
+  o.navigation.info_multiplier = *rc::gen::inRange(0, 30) * 0.1;
+  o.navigation.hysteresis_gain = *rc::gen::inRange(0, 30) * 0.1;
+  o.navigation.hysteresis_radius_m = *rc::gen::inRange(0, 20) * 0.1;
+  TraversabilityOptions t;
+  t.robot_radius_m = 0.0;
+  t.safety_margin_m = 0.0;
+  const PlanningMap map(b.map(), t);
+  const StartRegion start(map, b.At(r.x, r.y));
+  const PathDistanceField complete(map, start);
+  const PathDistanceField part(map, start, *rc::gen::inRange(0, 40) * 0.1);
+  const auto policy = MakeGoalPolicy("scout", o);
+  PolicyInput in;
+  in.map = &map;
+  in.frontier = &frontier;
+  in.robot = b.At(r.x, r.y);
+  in.current_goal = frontier[*rc::gen::inRange<size_t>(0, frontier.size())];
+  in.distances = &complete;
+  const std::vector<GoalCandidate> all = policy->Rank(in);
+  in.distances = &part;
+  const std::vector<GoalCandidate> some = policy->Rank(in);
+  const double above_cost = *policy->ScoreAbovePathCost(map);
+  size_t j = 0;
+  for (const GoalCandidate& c : all) {
+    if (j < some.size() && c.position == some[j].position) {
+      RC_ASSERT(c.score == some[j].score);
+      ++j;
+    } else {
+      RC_ASSERT(c.score <= above_cost - part.settled_m() + 1e-9);
+    }
+  }
+  RC_ASSERT(j == some.size());
+}
+
+// MaxInfoGainM2 bounds the information gain of any point, near the map's edge
+// (outside counts as unknown) and in mostly unknown maps, for both gains.
+RC_GTEST_PROP(GoalPoliciesProperty, InfoGainStaysWithinItsBound, ()) {
+  const int w = *rc::gen::inRange(1, 30), h = *rc::gen::inRange(1, 30);
+  MapBuilder b(w, h, 0.1, grid::CellState::kUnknown);
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      const int draw = *rc::gen::inRange(0, 100);
+      if (draw < 10) b.Wall(x, y, x, y);
+      if (draw >= 10 && draw < 30) b.Free(x, y, x, y);
+    }
+  }
+  NavigationPointOptions o;
+  o.info_radius_m = *rc::gen::inRange(0, 15) * 0.1;
+  o.info_visible_range_m = *rc::gen::element(0.0, 0.3, 1.2);
+  o.outside_map_is_unknown = *rc::gen::arbitrary<bool>();
+  const PlanningMap map(b.map(), TraversabilityOptions{});
+  const Eigen::Vector2d p(*rc::gen::inRange(-10, w * 10 + 10) * 0.01 * 1.0,
+                          *rc::gen::inRange(-10, h * 10 + 10) * 0.01 * 1.0);
+  const double bound = MaxInfoGainM2(0.1, o);
+  RC_ASSERT(InfoGain(map, p, o) <= bound);
 }
 
 TEST(GoalPoliciesTest, UnknownNameIsRejectedWithTheChoices) {

@@ -86,6 +86,15 @@ double UnknownAreaVisible(const PlanningMap& map, const Eigen::Vector2d& p, doub
   return static_cast<double>(unknown) * res * res;
 }
 
+double MaxInfoGainM2(double resolution_m, const NavigationPointOptions& options) {
+  // Both UnknownAreaWithin and UnknownAreaVisible count cells of the square
+  // of 2 r + 1 cells around the point's cell, r = ceil(radius / res) + 1.
+  const double radius_m =
+      options.info_visible_range_m > 0.0 ? options.info_visible_range_m : options.info_radius_m;
+  const double side = 2.0 * (std::ceil(radius_m / resolution_m) + 1.0) + 1.0;
+  return side * side * resolution_m * resolution_m;
+}
+
 double InfoGain(const PlanningMap& map, const Eigen::Vector2d& p,
                 const NavigationPointOptions& options) {
   return options.info_visible_range_m > 0.0

@@ -15,6 +15,13 @@ namespace scout::explore {
 // Path distance from the robot to every cell over a PlanningMap: one Dijkstra
 // (8-connected, steps of 1 and sqrt 2 cells, same step rule as the A* planner)
 // gives the cost of every navigation point at once.
+//
+// The search may stop early and go on later: a field settled up to a path
+// distance knows the cells nearer than that exactly and reports the others
+// as kUnreachable. The goal manager's re-ranking while it drives needs only
+// the candidates that could beat its goal, and the baselines only whether
+// any frontier is reachable; in the museum the complete search over a map of
+// millions of cells, once per second, took half of the run's wall time.
 class PathDistanceField {
  public:
   static constexpr float kUnreachable = std::numeric_limits<float>::infinity();
@@ -23,16 +30,39 @@ class PathDistanceField {
   // own cell, or the cells its bare disc reaches when it stands in the
   // inflated band). With no such cell every distance is kUnreachable.
   PathDistanceField(const PlanningMap& map, const Eigen::Vector2d& robot);
-  // Starts at the seeds of 'start', which must come from 'map'.
-  PathDistanceField(const PlanningMap& map, const StartRegion& start);
+  // Starts at the seeds of 'start', which must come from 'map'. Settles every
+  // cell within 'settle_m' of the start by path (all reachable cells by
+  // default).
+  PathDistanceField(const PlanningMap& map, const StartRegion& start,
+                    double settle_m = std::numeric_limits<double>::infinity());
+  // Copies hold the search's state (megabytes): move them.
+  PathDistanceField(const PathDistanceField&) = delete;
+  PathDistanceField& operator=(const PathDistanceField&) = delete;
+  PathDistanceField(PathDistanceField&&) = default;
+  PathDistanceField& operator=(PathDistanceField&&) = default;
 
-  // Returns the path distance in metres to the cell (kUnreachable if none).
+  // Goes on with the search until every cell within 'settle_m' is settled;
+  // the distances already known stay as they are. Requires the map the field
+  // was made from to be unchanged.
+  void SettleUpTo(double settle_m);
+  // True when every reachable cell is settled.
+  bool complete() const { return settled_cells_ == kUnreachable; }
+  // Every cell nearer than this (metres) is settled, every farther one
+  // reports kUnreachable; infinity when complete. A slight underestimate of
+  // the float distances at() returns.
+  double settled_m() const {
+    return complete() ? std::numeric_limits<double>::infinity()
+                      : settled_cells_ * double{res_} * (1.0 - 1e-6);
+  }
+
+  // Returns the path distance in metres to the cell (kUnreachable if none, or
+  // not settled yet).
   float at(int64_t flat) const {
-    return distance_cells_[flat + 2 * (flat / limits_.width()) + padded_width() + 1] * res_;
+    return Settled(distance_cells_[flat + 2 * (flat / limits_.width()) + padded_width() + 1]);
   }
   // As above; kUnreachable outside the map.
   float at(const grid::CellIndex& cell) const {
-    return limits_.Contains(cell) ? distance_cells_[Padded(cell)] * res_ : kUnreachable;
+    return limits_.Contains(cell) ? Settled(distance_cells_[Padded(cell)]) : kUnreachable;
   }
   // The seed cell nearest the robot by path, if any.
   const std::optional<grid::CellIndex>& start() const { return start_; }
@@ -51,6 +81,11 @@ class PathDistanceField {
   int64_t Padded(const grid::CellIndex& c) const {
     return (int64_t{c.y} + 1) * padded_width() + c.x + 1;
   }
+  // A cell's distance in metres if settled, else kUnreachable.
+  float Settled(float cells) const { return cells < settled_cells_ ? cells * res_ : kUnreachable; }
+  // Runs the search through the bucket of distances [k, k + 1) cells for
+  // every k <= last_bucket (or to its end).
+  void Run(int64_t last_bucket);
 
   grid::MapLimits limits_;
   float res_;  // metres per cell
@@ -59,6 +94,19 @@ class PathDistanceField {
   // unreachable cell on every side, so the search's inner loop needs no
   // bounds checks (index with Padded).
   std::vector<float> distance_cells_;
+  // Cells below this distance (in cells) are settled: the next bucket's
+  // distance while the search is under way, kUnreachable once it ended.
+  float settled_cells_ = kUnreachable;
+
+  // The search's state between calls (released once it ended): traversability
+  // codes padded like distance_cells_ with a settled flag, step costs by code,
+  // and Dial's bucket queue (see Run).
+  std::vector<uint8_t> code_;
+  float straight_cost_[3] = {0.0f, 1.0f, 1.0f};
+  float diagonal_cost_[3] = {0.0f, 1.0f, 1.0f};
+  std::vector<std::vector<uint32_t>> bucket_;
+  int64_t next_bucket_ = 0;  // k of the next bucket to run
+  int64_t pending_ = 0;      // entries in the buckets
 };
 
 }  // namespace scout::explore

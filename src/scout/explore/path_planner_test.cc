@@ -260,6 +260,44 @@ RC_GTEST_PROP(PathDistanceFieldProperty, MatchesBruteForceOnRandomMazes, ()) {
   }
 }
 
+// A field settled in parts, to random distances, knows exactly the complete
+// field's distances below settled_m(), reports the cells clearly beyond it
+// unreachable (none of a search's tentative distances), and once settled to
+// the end equals the complete field (the goal manager's re-ranking and the
+// baselines stop the search early).
+RC_GTEST_PROP(PathDistanceFieldProperty, SettlingInPartsEqualsTheCompleteField, ()) {
+  const int w = *rc::gen::inRange(3, 40), h = *rc::gen::inRange(3, 40);
+  MapBuilder b = RandomMaze(w, h);
+  const grid::CellIndex s{*rc::gen::inRange(0, w), *rc::gen::inRange(0, h)};
+  b.Free(s.x, s.y, s.x, s.y);
+  const PlanningMap map(b.map(), PointRobot());
+  const StartRegion start(map, b.At(s.x, s.y));
+  const PathDistanceField complete(map, start);
+  RC_ASSERT(complete.complete());
+  const auto check = [&](const PathDistanceField& part) {
+    for (int64_t i = 0; i < map.limits().num_cells(); ++i) {
+      const float want = complete.at(i);
+      // settled_m() lies a millionth below the first unsettled distance.
+      if (want < part.settled_m()) {
+        RC_ASSERT(part.at(i) == want);
+      } else if (want > part.settled_m() * (1.0 + 1e-5)) {
+        RC_ASSERT(part.at(i) == PathDistanceField::kUnreachable);
+      } else {
+        RC_ASSERT(part.at(i) == want || part.at(i) == PathDistanceField::kUnreachable);
+      }
+    }
+  };
+  PathDistanceField part(map, start, *rc::gen::inRange(0, 40) * 0.1);
+  check(part);
+  for (int steps = *rc::gen::inRange(0, 4); steps > 0; --steps) {
+    part.SettleUpTo(*rc::gen::inRange(0, 50) * 0.1);
+    check(part);
+  }
+  part.SettleUpTo(std::numeric_limits<double>::infinity());
+  RC_ASSERT(part.complete());
+  for (int64_t i = 0; i < map.limits().num_cells(); ++i) RC_ASSERT(part.at(i) == complete.at(i));
+}
+
 TEST(PlanningMapTest, ReusingThePreviousMapInflatesANewObstacleFully) {
   MapBuilder b(40, 40, 0.05, grid::CellState::kFree);
   const PlanningMap previous(b.map(), TraversabilityOptions{});
