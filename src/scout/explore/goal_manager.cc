@@ -180,7 +180,7 @@ GoalManager::Reach GoalManager::ReachFrom(const Eigen::Vector2d& robot,
   // Settles the field until it reaches a frontier point or every cell, from
   // 'settle_m' on, doubling (the nearest frontier is usually near).
   const auto reaches_frontier = [&](PathDistanceField& field) {
-    for (double d = settle_m;; d = std::max(2.0 * d, d + extents_.step_m)) {
+    for (double d = settle_m;; d = std::max(2.0 * d, kFirstSettle_m)) {
       field.SettleUpTo(d);
       for (const Eigen::Vector2d& p : frontier) {
         if (field.NearestReached(p, snap)) return true;
@@ -238,9 +238,9 @@ void GoalManager::ReachAndRank(const ExploreInput& in, const std::vector<Eigen::
   if (use == RankFor::kAgainstCurrentGoal && !pi.current_goal) ranking.above_cost_m.reset();
   double settle_m = distances ? std::numeric_limits<double>::infinity() : 0.0;
   if (ranking.above_cost_m) {
-    settle_m = *ranking.above_cost_m + extents_.first_m;
+    settle_m = *ranking.above_cost_m + kFirstSettle_m;
     if (use == RankFor::kAgainstCurrentGoal) {
-      settle_m += extents_.detour_factor * (*pi.current_goal - pi.robot).norm();
+      settle_m += kDetourFactor * (*pi.current_goal - pi.robot).norm();
     }
   }
   // The path distances cover the whole map, and so does the scout policy's
@@ -262,7 +262,7 @@ void GoalManager::ReachAndRank(const ExploreInput& in, const std::vector<Eigen::
       const double needed_m =
           current ? *ranking.above_cost_m - *current + kScoreSlack : 2.0 * field.settled_m();
       if (current && field.settled_m() >= needed_m) break;
-      ranking.reach.field->SettleUpTo(std::max(needed_m, field.settled_m() + extents_.step_m));
+      ranking.reach.field->SettleUpTo(std::max(needed_m, field.settled_m() + kFirstSettle_m));
       RankSettled(ranking);
     }
   }
@@ -298,7 +298,7 @@ bool GoalManager::MoreCandidates(Ranking& ranking) {
   if (ranking.sure < ranking.candidates.size()) {
     needed_m = *ranking.above_cost_m - ranking.candidates[ranking.sure].score + 2.0 * kScoreSlack;
   }
-  field.SettleUpTo(std::max(needed_m, field.settled_m() + extents_.step_m));
+  field.SettleUpTo(std::max(needed_m, field.settled_m() + kFirstSettle_m));
   RankSettled(ranking);
   return true;
 }

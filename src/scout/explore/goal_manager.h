@@ -316,18 +316,6 @@ class GoalManager {
 
   ExploreState state() const { return state_; }
   const ExploreCounters& counters() const { return counters_; }
-  // How far a partial path distance field is settled at first beyond what a
-  // candidate can score above its path cost, at least how much farther at
-  // each step (metres), and the allowance for detours on the way to the
-  // current goal (times its straight distance) when re-ranking. Tests shrink
-  // them so that fields stay partial on small maps; decisions do not depend
-  // on them.
-  struct PartialFieldExtents {
-    double first_m = 2.0;
-    double step_m = 2.0;
-    double detour_factor = 1.5;
-  };
-  void SetPartialFieldExtentsForTesting(const PartialFieldExtents& e) { extents_ = e; }
   const FailedGoalMemory& failed_goals() const { return failed_; }
   const GoalPolicy& policy() const { return *policy_; }
 
@@ -400,6 +388,11 @@ class GoalManager {
   // after the last.
   Selection PlanFirst(const std::function<const GoalCandidate*(size_t)>& candidate_at,
                       const ExploreInput& input, const StartRegion& start, bool fall_back);
+  // The first extent of a partial path distance field (metres), and the
+  // factor on the straight distance to the goal that the first extent of a
+  // re-ranking allows for the path's detours (more is settled when needed).
+  static constexpr double kFirstSettle_m = 2.0;
+  static constexpr double kDetourFactor = 1.5;
   // Scores summed in another order may differ in the last bits.
   static constexpr double kScoreSlack = 1e-6;
   // stand_off_unknown_margin_m for a policy that keeps it, else 0.
@@ -515,7 +508,6 @@ class GoalManager {
   std::vector<Eigen::Vector2d> reachable_frontier_left_points_;
   int visited_frontier_left_ = 0;
   std::vector<Eigen::Vector2d> candidates_;
-  PartialFieldExtents extents_;
   bool returned_home_ = false;
   ExploreCounters counters_;
 };
