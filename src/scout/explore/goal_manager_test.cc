@@ -467,5 +467,60 @@ TEST(GoalManagerTest, GoalWhoseFrontierIsSeenOnTheWayEndsAsSeen) {
   EXPECT_EQ(gm.counters().goals_superseded, 0);
 }
 
+TEST(GoalManagerTest, FindsTheBestGoalBeyondThePathDistanceSettledFirst) {
+  // A corridor with a shallow pocket of unknown at its west end, 7.0 m from
+  // the robot (0.65 m² of it), and open unknown space at its east end, 7.5 m
+  // away (half a disc of it): by Scout's revenue (multiplier 1, hysteresis
+  // off) the east end is the better goal. The goal manager first settles
+  // path distances to what a candidate can score above its path cost (the
+  // 5.29 m² square the gain counts) plus 2 m: 7.29 m. The west end, ranked
+  // then, is not sure to be the best, so it settles farther before it plans.
+  MapBuilder b{200, 100};
+  b.Wall(0, 0, 199, 99).Fill(1, 1, 198, 98, grid::CellState::kUnknown);
+  b.Wall(1, 1, 9, 98).Fill(5, 44, 9, 56, grid::CellState::kUnknown).Free(10, 1, 155, 98);
+  const std::vector<Eigen::Vector2d> frontier = b.FrontierPoints();
+  const Eigen::Vector2d robot = b.At(80, 50);
+  GoalPolicyOptions policy;
+  policy.navigation.hysteresis_gain = 1.0;
+  const auto first_goal = [&](const GoalPolicyOptions& p) {
+    GoalManager gm(NoStuckRecovery(), {}, {}, {}, MakeGoalPolicy("scout", p));
+    gm.Start();
+    const ExploreStatus s = gm.Update(InputAt(0, robot, b.map(), frontier, true));
+    EXPECT_EQ(s.state, ExploreState::kDriving);
+    return s.goal.value_or(Eigen::Vector2d(NAN, NAN));
+  };
+  EXPECT_GT(first_goal(policy).x(), robot.x() + 5.0);
+  // Information weighs nothing: the nearer west end is the best.
+  policy.navigation.info_multiplier = 0.01;
+  EXPECT_LT(first_goal(policy).x(), robot.x() - 4.0);
+}
+
+TEST(GoalManagerTest, ComparesAGoalFarAroundAWallWithNewCandidates) {
+  // The goal lies 4 m from the robot as the crow flies but 35 m by path,
+  // round the end of a wall. Unknown space then appears 13 m away on the
+  // robot's side: better by far more than the switch margin. Re-ranking
+  // settles path distances to a detour's worth of the straight line to the
+  // goal first; it must go on until it has the goal's own score to compare.
+  MapBuilder b{200, 100};
+  b.Wall(0, 0, 199, 99).Fill(1, 1, 198, 98, grid::CellState::kUnknown);
+  b.Free(1, 1, 198, 48).Wall(1, 49, 170, 50).Free(171, 49, 198, 50).Free(1, 51, 198, 98);
+  b.Fill(1, 70, 30, 98, grid::CellState::kUnknown);
+  const std::vector<Eigen::Vector2d> frontier = b.FrontierPoints();
+  const Eigen::Vector2d robot = b.At(20, 30);
+  GoalManager gm = MakeManager();
+  gm.Start();
+  const ExploreStatus first = gm.Update(InputAt(0, robot, b.map(), frontier, true));
+  ASSERT_EQ(first.state, ExploreState::kDriving);
+  ASSERT_GT(first.goal->y(), b.At(0, 50).y());
+  MapBuilder opened = b;
+  opened.Fill(150, 1, 198, 20, grid::CellState::kUnknown);
+  const std::vector<Eigen::Vector2d> more = opened.FrontierPoints();
+  const ExploreStatus st = gm.Update(InputAt(2, robot, opened.map(), more, true));
+  ASSERT_EQ(st.state, ExploreState::kDriving);
+  EXPECT_LT(st.goal->y(), b.At(0, 49).y());
+  EXPECT_GT(st.goal->x(), b.At(140, 0).x());
+  EXPECT_EQ(gm.counters().goals_superseded, 1);
+}
+
 }  // namespace
 }  // namespace scout::explore
