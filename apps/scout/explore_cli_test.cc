@@ -221,8 +221,8 @@ TEST_F(ExploreCli, ExploresASmallMapAndWritesEveryOutput) {
   ASSERT_EQ(r.exit_code, 0) << r.output;
   for (const char* name :
        {"map.yaml", "map.pgm", "map.png", "coverage.png", "trajectory.tum", "truth.tum",
-        "frontier.csv", "coverage.csv", "loop_closures.csv", "summary.json", "report.html",
-        "figures/coverage_path.svg", "figures/coverage_time.svg"}) {
+        "frontier.csv", "coverage.csv", "goals.csv", "loop_closures.csv", "summary.json",
+        "report.html", "figures/coverage_path.svg", "figures/coverage_time.svg"}) {
     EXPECT_TRUE(fs::exists(out / name)) << name;
   }
   // The report embeds both pictures and names the directory the run is in,
@@ -252,6 +252,40 @@ TEST_F(ExploreCli, ExploresASmallMapAndWritesEveryOutput) {
       accepted += f[3] == "accepted";
     }
     EXPECT_EQ(accepted, s["slam"]["loop_closures"].get<int>());
+  }
+  // One row per goal issued, its outcome as the counters count it.
+  {
+    std::ifstream csv(out / "goals.csv");
+    std::string line;
+    std::getline(csv, line);
+    EXPECT_EQ(line,
+              "issued_s,robot_x,robot_y,goal_x,goal_y,target_x,target_y,score,path_m,ended_s,"
+              "outcome,reachable_in_truth");
+    int rows = 0, reached = 0, seen = 0, open = 0, unreachable = 0;
+    double last_issued_s = -1.0;
+    while (std::getline(csv, line)) {
+      std::vector<std::string> f;
+      std::istringstream fields(line);
+      for (std::string v; std::getline(fields, v, ',');) f.push_back(v);
+      ASSERT_EQ(f.size(), 12u) << line;
+      ++rows;
+      const double issued_s = std::stod(f[0]);
+      EXPECT_GT(issued_s, last_issued_s) << line;
+      last_issued_s = issued_s;
+      EXPECT_GT(std::stod(f[8]), 0.0) << line;  // a path was planned
+      reached += f[10] == "reached";
+      seen += f[10] == "seen";
+      open += f[10] == "open";
+      if (f[10] != "open") {
+        EXPECT_GE(std::stod(f[9]), issued_s) << line;
+      }
+      unreachable += f[11] == "0";
+    }
+    EXPECT_EQ(rows, s["goals"]["issued"].get<int>());
+    EXPECT_EQ(reached, s["goals"]["reached"].get<int>());
+    EXPECT_EQ(seen, s["goals"]["seen_before_arrival"].get<int>());
+    EXPECT_LE(open, 1);  // at most the goal the run ended with
+    EXPECT_EQ(unreachable, s["goals"]["unreachable"].get<int>());
   }
   EXPECT_EQ(s["world"], "rooms");
   EXPECT_EQ(s["seed"], 2);

@@ -248,6 +248,28 @@ void WriteCoverageCsv(const std::vector<exploration::CoverageSample>& samples,
   WriteTextFileAtomically(path, csv.str());
 }
 
+// One row per goal issued: when, where the robot stood and where it was sent
+// (world frame, as the truth places them), the policy's score, the planned
+// path, how it ended, and whether the true world let the robot get there.
+void WriteGoalsCsv(const std::vector<exploration::IssuedGoal>& goals,
+                   const std::filesystem::path& path) {
+  std::ostringstream csv;
+  csv << "issued_s,robot_x,robot_y,goal_x,goal_y,target_x,target_y,score,path_m,ended_s,outcome,"
+         "reachable_in_truth\n"
+      << std::setprecision(6);
+  // Empty where there is no value (a goal still open has no end).
+  const auto number = [](double v) { return std::isfinite(v) ? FixedOrDash(v, 3) : ""; };
+  for (const exploration::IssuedGoal& g : goals) {
+    const explore::GoalRecord& r = g.record;
+    csv << g.sim_time_s << "," << g.robot_world.x() << "," << g.robot_world.y() << ","
+        << g.goal_world.x() << "," << g.goal_world.y() << "," << g.target_world.x() << ","
+        << g.target_world.y() << "," << number(r.score) << "," << r.path_m << ","
+        << number(r.ended_s) << "," << explore::ToString(r.outcome) << ","
+        << (g.reachable_in_truth ? 1 : 0) << "\n";
+  }
+  WriteTextFileAtomically(path, csv.str());
+}
+
 void PrintProgress(const exploration::ExplorationProgress& p, bool terminal) {
   std::cerr << (terminal ? "\r" : "") << "explore: t=" << std::fixed << std::setprecision(0)
             << p.sim_time_s << " s coverage " << std::setprecision(1) << 100.0 * p.coverage
@@ -387,6 +409,7 @@ int RunExplore(const ExploreArgs& args) {
                           out.Stage("loop_closures.csv"));
   io::WriteFrontierCsv(loop.frontier_engine(), out.Stage("frontier.csv"));
   WriteCoverageCsv(result.coverage_samples, out.Stage("coverage.csv"));
+  WriteGoalsCsv(result.goals, out.Stage("goals.csv"));
   int snapshots = 0;
   for (const exploration::IssuedGoal& g : result.goals) {
     if (g.map_then == nullptr) continue;
@@ -424,7 +447,7 @@ int RunExplore(const ExploreArgs& args) {
             << FrontierLeftText(result) << "\n"
             << "outputs: " << (out.path() / "summary.json").string()
             << ", map.yaml, map.pgm, map.png, coverage.png, trajectory.tum, truth.tum, "
-               "frontier.csv, coverage.csv, loop_closures.csv, report.html, figures/"
+               "frontier.csv, coverage.csv, goals.csv, loop_closures.csv, report.html, figures/"
             << (log ? ", sensor.log" : "")
             << (snapshots > 0 ? ", unreachable-goal-*.png (the map each goal the true world made "
                                 "unreachable was chosen on, and the true world around it)"

@@ -491,6 +491,7 @@ ExplorationResult ExplorationLoop::Run(const ProgressCallback& progress, double 
       result_.timings.goals_s += watch.ElapsedUs() * 1e-6;
       if (goals_.counters().goals_issued > issued_before && status.goal && status.target) {
         RecordIssuedGoal(*status.goal, *status.target, status.path);
+        goal_log_index_.push_back(goals_.goal_log().size() - 1);
       }
     }
     if (t >= next_sample_s) {
@@ -540,6 +541,11 @@ ExplorationResult ExplorationLoop::Run(const ProgressCallback& progress, double 
   result_.path_length_m = robot_.path_length_m();
   result_.collisions = robot_.collisions();
   result_.counters = goals_.counters();
+  // The loop recorded each goal when issued; the goal manager's log of it
+  // knows how it ended.
+  for (size_t i = 0; i < result_.goals.size(); ++i) {
+    result_.goals[i].record = goals_.goal_log()[goal_log_index_[i]];
+  }
   for (const explore::FailedGoal& g : goals_.failed_goals().goals()) {
     result_.failed_goals.push_back(
         {explore::Resolve(g.where, submap_poses_), g.failures, g.blacklisted});

@@ -61,6 +61,8 @@ struct IssuedGoal {
   Eigen::Vector2d target_map = Eigen::Vector2d::Zero();
   Eigen::Vector2d robot_world = Eigen::Vector2d::Zero();  // true position then
   Eigen::Vector2d robot_map = Eigen::Vector2d::Zero();    // estimated position then
+  // The goal manager's record of it: score, planned path, how it ended.
+  explore::GoalRecord record;
   // False when the bare disc could not get within the goal tolerance of the
   // target from where it stood: the robot was sent somewhere it cannot be.
   bool reachable_in_truth = true;
@@ -309,6 +311,8 @@ class ExplorationLoop {
   ScanRecorder scan_recorder_;
   OdometryRecorder odometry_recorder_;
   ExplorationResult result_;
+  // For each of result_.goals, its record in the goal manager's log.
+  std::vector<size_t> goal_log_index_;
   MapProgress map_progress_;
   double last_resort_s_ = -1e300;
 

@@ -75,6 +75,30 @@ std::string_view ToString(ExploreState state) {
   return "unknown";
 }
 
+std::string_view ToString(GoalOutcome outcome) {
+  switch (outcome) {
+    case GoalOutcome::kOpen:
+      return "open";
+    case GoalOutcome::kReached:
+      return "reached";
+    case GoalOutcome::kSeen:
+      return "seen";
+    case GoalOutcome::kFailed:
+      return "failed";
+    case GoalOutcome::kUnreachable:
+      return "unreachable";
+    case GoalOutcome::kSuperseded:
+      return "superseded";
+    case GoalOutcome::kDropped:
+      return "dropped";
+    case GoalOutcome::kStuck:
+      return "stuck";
+    case GoalOutcome::kStopped:
+      return "stopped";
+  }
+  return "unknown";
+}
+
 bool InsidePolygon(const std::vector<Eigen::Vector2d>& polygon, const Eigen::Vector2d& p) {
   bool inside = false;
   for (size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
@@ -114,6 +138,7 @@ void GoalManager::Start() {
 }
 
 void GoalManager::Stop() {
+  CloseGoalRecord(GoalOutcome::kStopped);
   state_ = ExploreState::kIdle;
   goal_.reset();
   follower_.Clear();
@@ -327,16 +352,19 @@ GoalManager::Selection GoalManager::PlanFirst(
       if (!contradicted.goal) {
         contradicted.goal = c.position;
         contradicted.path = std::move(path);
+        contradicted.score = c.score;
       }
       continue;
     }
     sel.goal = c.position;
     sel.path = std::move(path);
+    sel.score = c.score;
     return sel;
   }
   if (fall_back && contradicted.goal) {
     sel.goal = contradicted.goal;
     sel.path = std::move(contradicted.path);
+    sel.score = contradicted.score;
   }
   return sel;
 }
@@ -384,7 +412,8 @@ GoalManager::Selection GoalManager::SelectAndPlan(const ExploreInput& in) {
 }
 
 void GoalManager::BeginDriving(const Eigen::Vector2d& goal, const PlannedPath& path,
-                               const ExploreInput& in, ExploreState state, bool new_goal) {
+                               const ExploreInput& in, ExploreState state, bool new_goal,
+                               double score) {
   goal_ = Anchor(goal, in.submaps);
   // Home is where the robot stood: no stand-off needed.
   std::vector<Eigen::Vector2d> points =
@@ -402,12 +431,23 @@ void GoalManager::BeginDriving(const Eigen::Vector2d& goal, const PlannedPath& p
     // valid while the frontier is no farther than when it was chosen.
     goal_frontier_reach_m_ = DistanceToFrontier(goal, FrontierInBoundary(*in.frontier)) +
                              options_.goal_frontier_radius_m;
-    if (state == ExploreState::kDriving) ++counters_.goals_issued;
+    if (state == ExploreState::kDriving) {
+      ++counters_.goals_issued;
+      CloseGoalRecord(GoalOutcome::kSuperseded);
+      goal_log_.push_back({in.time_s, goal, score, length_m});
+    }
   }
   state_ = state;
 }
 
-void GoalManager::EndGoal(ExploreState next) {
+void GoalManager::CloseGoalRecord(GoalOutcome outcome) {
+  if (goal_log_.empty() || goal_log_.back().outcome != GoalOutcome::kOpen) return;
+  goal_log_.back().outcome = outcome;
+  goal_log_.back().ended_s = now_s_;
+}
+
+void GoalManager::EndGoal(ExploreState next, GoalOutcome outcome) {
+  if (goal_ && state_ != ExploreState::kReturning) CloseGoalRecord(outcome);
   moving_since_.reset();
   backing_up_since_.reset();
   retracing_since_.reset();
@@ -423,7 +463,7 @@ void GoalManager::Plan(const ExploreInput& in) {
   Selection sel = SelectAndPlan(in);
   if (sel.goal) {
     empty_since_s_.reset();
-    BeginDriving(*sel.goal, *sel.path, in, ExploreState::kDriving, /*new_goal=*/true);
+    BeginDriving(*sel.goal, *sel.path, in, ExploreState::kDriving, /*new_goal=*/true, sel.score);
     return;
   }
   // Candidates left whose plans were not tried yet: go on next cycle.
@@ -479,7 +519,7 @@ void GoalManager::FinishOrGoHome(const ExploreInput& in, ExploreStatus& status) 
       return;
     }
   }
-  EndGoal(ExploreState::kFinished);
+  EndGoal(ExploreState::kFinished, GoalOutcome::kOpen);
 }
 
 void GoalManager::ReplanHome(const ExploreInput& in) {
@@ -500,7 +540,7 @@ void GoalManager::Replan(const ExploreInput& in) {
     // Seen on the way: the goal did its job.
     ++counters_.goals_seen;
     visited_.RecordFailure(current, in.submaps, *map_);
-    return EndGoal(ExploreState::kPlanning);
+    return EndGoal(ExploreState::kPlanning, GoalOutcome::kSeen);
   }
   ++counters_.selections;
   Ranking ranking;
@@ -523,7 +563,8 @@ void GoalManager::Replan(const ExploreInput& in) {
       Selection sel = PlanFirst(better_at, in, *ranking.reach.start, /*fall_back=*/false);
       if (sel.goal) {
         ++counters_.goals_superseded;
-        return BeginDriving(*sel.goal, *sel.path, in, ExploreState::kDriving, /*new_goal=*/true);
+        return BeginDriving(*sel.goal, *sel.path, in, ExploreState::kDriving, /*new_goal=*/true,
+                            sel.score);
       }
     }
   }
@@ -535,23 +576,23 @@ void GoalManager::Replan(const ExploreInput& in) {
     // The map now blocks every way there.
     ++counters_.goals_unreachable;
     failed_.RecordFailure(current, in.submaps, *map_);
-  } else {
-    // A wall seen next to the goal put it in the band: its frontier is
-    // still there, so the next selection offers a reachable point of it.
-    ++counters_.goals_dropped;
+    return EndGoal(ExploreState::kPlanning, GoalOutcome::kUnreachable);
   }
-  EndGoal(ExploreState::kPlanning);
+  // A wall seen next to the goal put it in the band: its frontier is
+  // still there, so the next selection offers a reachable point of it.
+  ++counters_.goals_dropped;
+  EndGoal(ExploreState::kPlanning, GoalOutcome::kDropped);
 }
 
 void GoalManager::FailGoal(const ExploreInput& in) {
   // Failing the way home ends exploration; a failed goal is remembered.
   if (state_ == ExploreState::kReturning) {
-    EndGoal(ExploreState::kFinished);
+    EndGoal(ExploreState::kFinished, GoalOutcome::kFailed);
     return;
   }
   ++counters_.goals_failed;
   failed_.RecordFailure(Resolve(*goal_, in.submaps), in.submaps, *map_);
-  EndGoal(ExploreState::kFailed);
+  EndGoal(ExploreState::kFailed, GoalOutcome::kFailed);
 }
 
 void GoalManager::Drive(const ExploreInput& in, ExploreStatus& status) {
@@ -582,11 +623,11 @@ void GoalManager::Drive(const ExploreInput& in, ExploreStatus& status) {
   if (fs.reached) {
     if (returning) {
       returned_home_ = true;
-      EndGoal(ExploreState::kFinished);
+      EndGoal(ExploreState::kFinished, GoalOutcome::kReached);
     } else {
       ++counters_.goals_reached;
       visited_.RecordFailure(Resolve(*goal_, in.submaps), in.submaps, *map_);
-      EndGoal(ExploreState::kReached);
+      EndGoal(ExploreState::kReached, GoalOutcome::kReached);
     }
     return;
   }
@@ -620,6 +661,7 @@ void GoalManager::Drive(const ExploreInput& in, ExploreStatus& status) {
 
 ExploreStatus GoalManager::Update(const ExploreInput& in) {
   if (!in.map || !in.frontier) throw std::invalid_argument("GoalManager::Update: no map/frontier");
+  now_s_ = in.time_s;
   if (in.map_changed) {
     map_dirty_ = true;
     need_selection_ = true;

@@ -256,6 +256,35 @@ struct ExploreCounters {
   int guard_steers = 0;      // control cycles it steered another arc instead
 };
 
+// How an issued goal ended.
+enum class GoalOutcome {
+  kOpen,         // still the goal (or the exploration ended with it)
+  kReached,      // the robot arrived within the goal tolerance
+  kSeen,         // its frontier was seen before the robot arrived
+  kFailed,       // no progress in time, or stuck on it twice, or a last resort
+  kUnreachable,  // the map came to block every way there
+  kSuperseded,   // a clearly better goal replaced it on the way
+  kDropped,      // the map put it inside the inflated band
+  kStuck,        // the robot got stuck on the way and selected afresh
+  kStopped,      // Stop() dropped it
+};
+std::string_view ToString(GoalOutcome outcome);
+
+// A goal the goal manager issued (global frame, as when issued): why the
+// robot drove where it did, for a user reading a run.
+struct GoalRecord {
+  double issued_s = 0.0;
+  Eigen::Vector2d goal = Eigen::Vector2d::Zero();
+  // The policy's score when chosen, higher is better (Scout's: revenue,
+  // info_multiplier × m² − path metres; nearest: −distance; explore-lite:
+  // −cost).
+  double score = std::numeric_limits<double>::quiet_NaN();
+  // Length of the path planned then, to the stand-off point (metres).
+  double path_m = 0.0;
+  double ended_s = std::numeric_limits<double>::quiet_NaN();
+  GoalOutcome outcome = GoalOutcome::kOpen;
+};
+
 struct ExploreStatus {
   ExploreState state = ExploreState::kIdle;
   VelocityCommand command;
@@ -316,6 +345,8 @@ class GoalManager {
 
   ExploreState state() const { return state_; }
   const ExploreCounters& counters() const { return counters_; }
+  // Every goal issued so far, oldest first (not the way home).
+  const std::vector<GoalRecord>& goal_log() const { return goal_log_; }
   const FailedGoalMemory& failed_goals() const { return failed_; }
   const GoalPolicy& policy() const { return *policy_; }
 
@@ -323,6 +354,7 @@ class GoalManager {
   struct Selection {
     std::optional<Eigen::Vector2d> goal;
     std::optional<PlannedPath> path;
+    double score = std::numeric_limits<double>::quiet_NaN();
     // No candidate outside the blacklist (as opposed to: plans failed).
     bool none_left = true;
   };
@@ -407,10 +439,15 @@ class GoalManager {
   // Returns the best goal that is not blacklisted and has a plan.
   Selection SelectAndPlan(const ExploreInput& input);
   // Anchors the goal and hands its path to the follower. A re-plan to the
-  // same goal keeps the progress clock running.
+  // same goal keeps the progress clock running. A new goal while driving
+  // ends the current one as superseded; 'score' is the new goal's.
   void BeginDriving(const Eigen::Vector2d& goal, const PlannedPath& path, const ExploreInput& in,
-                    ExploreState state, bool new_goal);
-  void EndGoal(ExploreState next);
+                    ExploreState state, bool new_goal,
+                    double score = std::numeric_limits<double>::quiet_NaN());
+  // Drops the goal (or the way home); an issued goal still open in the log
+  // ends with 'outcome'.
+  void EndGoal(ExploreState next, GoalOutcome outcome);
+  void CloseGoalRecord(GoalOutcome outcome);
   // PLANNING: select and plan when something changed.
   void Plan(const ExploreInput& input);
   // No goal left: after finish_after_empty_s (longer, turning on the spot,
@@ -510,6 +547,8 @@ class GoalManager {
   std::vector<Eigen::Vector2d> candidates_;
   bool returned_home_ = false;
   ExploreCounters counters_;
+  std::vector<GoalRecord> goal_log_;
+  double now_s_ = 0.0;  // the latest update's time
 };
 
 // True when 'p' lies inside the simple polygon (even-odd rule).

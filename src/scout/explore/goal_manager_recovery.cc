@@ -72,13 +72,13 @@ bool GoalManager::OffTrail(const geometry::Rigid2d& pose) const {
 
 void GoalManager::EndStuckGoal(const ExploreInput& in) {
   if (state_ == ExploreState::kReturning) return FailGoal(in);
-  if (!goal_) return EndGoal(ExploreState::kPlanning);  // a last resort's drive back
+  if (!goal_) return EndGoal(ExploreState::kPlanning, GoalOutcome::kOpen);  // a drive back
   std::vector<Eigen::Vector2d> stuck_before;
   for (const AnchoredPoint& p : stuck_goals_) stuck_before.push_back(Resolve(p, in.submaps));
   if (failed_.IsNear(Resolve(*goal_, in.submaps), stuck_before)) return FailGoal(in);
   stuck_goals_.push_back(*goal_);
   ++counters_.stuck_reselections;
-  EndGoal(ExploreState::kPlanning);
+  EndGoal(ExploreState::kPlanning, GoalOutcome::kStuck);
 }
 
 void GoalManager::Guard(const ExploreInput& in, VelocityCommand* command, double clearance_m) {
@@ -152,7 +152,7 @@ bool GoalManager::LastResort(const ExploreInput& in, bool drive_back) {
     ++counters_.goals_failed;
     failed_.RecordFailure(Resolve(*goal_, in.submaps), in.submaps, *map_);
   }
-  EndGoal(ExploreState::kDriving);
+  EndGoal(ExploreState::kDriving, GoalOutcome::kFailed);
   BeginDriveBack(in, std::move(way));
   return true;
 }

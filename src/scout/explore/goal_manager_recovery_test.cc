@@ -36,6 +36,9 @@ TEST(GoalManagerTest, ProgressTimeoutMarksTheGoalFailedAndPicksAnother) {
   EXPECT_EQ(gm.counters().goals_failed, 1);
   ASSERT_EQ(failed.blacklisted.size(), 1u);
   EXPECT_EQ(failed.blacklisted[0], *first.goal);
+  ASSERT_EQ(gm.goal_log().size(), 1u);
+  EXPECT_EQ(gm.goal_log()[0].outcome, GoalOutcome::kFailed);
+  EXPECT_EQ(gm.goal_log()[0].ended_s, 30.5);
 
   const ExploreStatus next = gm.Update(room.Input(31, robot, false));
   EXPECT_EQ(next.state, ExploreState::kDriving);

@@ -33,6 +33,18 @@ TEST(GoalManagerTest, IdleUntilStartedAndStopsOnRequest) {
   EXPECT_EQ(stopped.state, ExploreState::kIdle);
   EXPECT_EQ(stopped.command.linear_mps, 0.0);
   EXPECT_FALSE(stopped.goal.has_value());
+  // The goal's record: issued at 0.1 s, dropped by Stop() after that update.
+  ASSERT_EQ(gm.goal_log().size(), 1u);
+  const GoalRecord& r = gm.goal_log()[0];
+  EXPECT_EQ(r.issued_s, 0.1);
+  EXPECT_EQ(r.goal, *driving.goal);
+  EXPECT_EQ(r.ended_s, 0.1);
+  EXPECT_EQ(r.outcome, GoalOutcome::kStopped);
+  EXPECT_EQ(ToString(r.outcome), "stopped");
+  // Scout's revenue: at most the area the gain counts, minus the path.
+  EXPECT_GT(r.path_m, 2.5);
+  EXPECT_LT(r.score, 0.0);
+  EXPECT_GT(r.score, -r.path_m - 0.5);
 }
 
 TEST(GoalManagerTest, SendsTheRobotToAStandOffInKnownFreeSpace) {
@@ -221,6 +233,8 @@ TEST(GoalManagerTest, ReachedGoalIsCountedAndTheNextOneChosen) {
   const ExploreStatus there = gm.Update(room.Input(5, *first.goal, false));
   EXPECT_EQ(there.state, ExploreState::kReached);
   EXPECT_EQ(gm.counters().goals_reached, 1);
+  ASSERT_EQ(gm.goal_log().size(), 1u);
+  EXPECT_EQ(gm.goal_log()[0].outcome, GoalOutcome::kReached);
   // The reached point stays a frontier here (the map did not change): it is
   // not chosen again, so the robot cannot loop on a frontier it cannot see.
   const ExploreStatus next = gm.Update(room.Input(6, *first.goal, false));
@@ -448,6 +462,12 @@ TEST(GoalManagerTest, GoalIsKeptWhenASlightlyBetterOneAppearsAndSwitchedForAClea
   EXPECT_LT((*switched.goal - robot).norm(), 0.5);
   EXPECT_EQ(gm.counters().goals_issued, 2);
   EXPECT_EQ(gm.counters().goals_superseded, 1);
+  ASSERT_EQ(gm.goal_log().size(), 2u);
+  EXPECT_EQ(gm.goal_log()[0].outcome, GoalOutcome::kSuperseded);
+  EXPECT_EQ(gm.goal_log()[0].ended_s, 4.0);
+  EXPECT_EQ(gm.goal_log()[1].outcome, GoalOutcome::kOpen);
+  EXPECT_TRUE(std::isnan(gm.goal_log()[1].ended_s));
+  EXPECT_GT(gm.goal_log()[1].score, gm.goal_log()[0].score);
 }
 
 TEST(GoalManagerTest, GoalWhoseFrontierIsSeenOnTheWayEndsAsSeen) {
@@ -465,6 +485,9 @@ TEST(GoalManagerTest, GoalWhoseFrontierIsSeenOnTheWayEndsAsSeen) {
   EXPECT_EQ(gm.counters().goals_seen, 1);
   EXPECT_EQ(gm.counters().goals_reached, 0);
   EXPECT_EQ(gm.counters().goals_superseded, 0);
+  ASSERT_EQ(gm.goal_log().size(), 1u);
+  EXPECT_EQ(gm.goal_log()[0].outcome, GoalOutcome::kSeen);
+  EXPECT_EQ(gm.goal_log()[0].ended_s, 2.0);
 }
 
 TEST(GoalManagerTest, FindsTheBestGoalBeyondThePathDistanceSettledFirst) {
