@@ -336,12 +336,13 @@ GoalManager::Selection GoalManager::PlanFirst(
   Selection contradicted;
   const std::vector<Eigen::Vector2d> returns = CheckedReturns(in);
   int attempts = 0;
+  ReachableCells reachable;
   for (size_t i = 0; const GoalCandidate* next = candidate_at(i); ++i) {
     const GoalCandidate c = *next;
     if (attempts++ >= options_.max_plan_attempts) break;
     // A candidate near one that failed during this very loop shares its fate.
     if (failed_.IsNear(c.position, failed_.Blacklisted(in.submaps))) continue;
-    std::optional<PlannedPath> path = planner_.Plan(*map_, start, c.position);
+    std::optional<PlannedPath> path = planner_.Plan(*map_, start, c.position, reachable);
     if (!path) {
       ++counters_.goals_unreachable;
       failed_.RecordFailure(c.position, in.submaps, *map_);

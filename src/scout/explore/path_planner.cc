@@ -80,6 +80,33 @@ std::optional<PlannedPath> PathPlanner::Plan(const PlanningMap& map, const Eigen
 
 std::optional<PlannedPath> PathPlanner::Plan(const PlanningMap& map, const StartRegion& start,
                                              const Eigen::Vector2d& goal) const {
+  return Search(map, start, goal, nullptr);
+}
+
+std::optional<PlannedPath> PathPlanner::Plan(const PlanningMap& map, const StartRegion& start,
+                                             const Eigen::Vector2d& goal,
+                                             ReachableCells& reachable) const {
+  if (!reachable.known()) return Search(map, start, goal, &reachable);
+  if (reachable.map_ != &map || reachable.start_ != &start) {
+    throw std::invalid_argument("PathPlanner: reachable cells learnt on another map or start");
+  }
+  // A* reaches the goal cell or a cell within the snap radius of the goal,
+  // when one of them is reachable at all.
+  const grid::MapLimits& limits = map.limits();
+  const grid::CellIndex goal_cell = limits.CellContaining(goal);
+  bool any = limits.Contains(goal_cell) && reachable.cells_[limits.FlatIndex(goal_cell)];
+  if (!any) {
+    ForEachCellWithin(
+        limits, goal, map.options().goal_snap_radius_m,
+        [&](const grid::CellIndex& c) { any = any || reachable.cells_[limits.FlatIndex(c)]; });
+  }
+  if (!any) return std::nullopt;
+  return Search(map, start, goal, nullptr);
+}
+
+std::optional<PlannedPath> PathPlanner::Search(const PlanningMap& map, const StartRegion& start,
+                                               const Eigen::Vector2d& goal,
+                                               ReachableCells* reachable) const {
   const bool penalise = options_.clearance_weight > 0.0;
   if (penalise && !map.has_clearance()) {
     throw std::invalid_argument("PathPlanner: clearance_weight > 0 needs a map with clearance");
@@ -155,7 +182,18 @@ std::optional<PlannedPath> PathPlanner::Plan(const PlanningMap& map, const Start
       }
     }
   }
-  if (reached < 0) return std::nullopt;
+  if (reached < 0) {
+    // The search closed every cell it could reach.
+    if (reachable != nullptr) {
+      reachable->map_ = &map;
+      reachable->start_ = &start;
+      reachable->cells_.assign(static_cast<size_t>(limits.num_cells()), false);
+      for (int64_t flat = 0; flat < limits.num_cells(); ++flat) {
+        if (scratch.IsClosed(flat)) reachable->cells_[static_cast<size_t>(flat)] = true;
+      }
+    }
+    return std::nullopt;
+  }
 
   // Walk back through the parents; the raw path is start, cells..., end.
   std::vector<Eigen::Vector2d> raw;

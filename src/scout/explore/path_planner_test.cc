@@ -242,6 +242,41 @@ RC_GTEST_PROP(PathPlannerProperty, MatchesBruteForceOnRandomMazes, ()) {
   }
 }
 
+// Plans that share what a failed plan learnt (ReachableCells) are the plans
+// made without it, goal for goal: the goal manager plans to a selection's
+// candidates in turn, and after one fails the others are answered at once.
+RC_GTEST_PROP(PathPlannerProperty, ReachableCellsOfAFailedPlanChangeNoPlan, ()) {
+  const int w = *rc::gen::inRange(4, 30), h = *rc::gen::inRange(4, 30);
+  MapBuilder b = RandomMaze(w, h);
+  const grid::CellIndex s{*rc::gen::inRange(0, w), *rc::gen::inRange(0, h)};
+  b.Free(s.x, s.y, s.x, s.y);
+  TraversabilityOptions o = PointRobot();
+  o.goal_snap_radius_m = *rc::gen::inRange(0, 4) * 0.05;
+  const PlanningMap map(b.map(), o);
+  const StartRegion start(map, b.At(s.x, s.y));
+  const PathPlanner planner({});
+  ReachableCells reachable;
+  int failed = 0;
+  for (int goals = *rc::gen::inRange(1, 12); goals > 0; --goals) {
+    // Anywhere on the map and a little beyond it, not only at cell centres.
+    const Eigen::Vector2d goal(*rc::gen::inRange(-5, 10 * w + 5) * 0.01 * 1.03,
+                               *rc::gen::inRange(-5, 10 * h + 5) * 0.01 * 0.97);
+    const std::optional<PlannedPath> want = planner.Plan(map, start, goal);
+    const std::optional<PlannedPath> got = planner.Plan(map, start, goal, reachable);
+    RC_ASSERT(got.has_value() == want.has_value());
+    failed += !want.has_value();
+    RC_ASSERT(reachable.known() == (failed > 0));
+    if (want) {
+      RC_ASSERT(got->points == want->points);
+      RC_ASSERT(got->expansions == want->expansions);
+    }
+  }
+  const PlanningMap other(b.map(), o);
+  if (reachable.known()) {
+    RC_ASSERT_THROWS_AS(planner.Plan(other, start, b.At(0, 0), reachable), std::invalid_argument);
+  }
+}
+
 // The distance field's Dijkstra gives every cell the brute-force path length.
 RC_GTEST_PROP(PathDistanceFieldProperty, MatchesBruteForceOnRandomMazes, ()) {
   const int w = *rc::gen::inRange(3, 12), h = *rc::gen::inRange(3, 12);
