@@ -491,18 +491,19 @@ TEST(GoalManagerTest, GoalWhoseFrontierIsSeenOnTheWayEndsAsSeen) {
 }
 
 TEST(GoalManagerTest, FindsTheBestGoalBeyondThePathDistanceSettledFirst) {
-  // A corridor with a shallow pocket of unknown at its west end, 7.0 m from
-  // the robot (0.65 m² of it), and open unknown space at its east end, 7.5 m
+  // A corridor with a shallow pocket of unknown at its west end, 5.3 m from
+  // the robot (0.65 m² of it), and open unknown space at its east end, 5.8 m
   // away (half a disc of it): by Scout's revenue (multiplier 1, hysteresis
   // off) the east end is the better goal. The goal manager first settles
-  // path distances to what a candidate can score above its path cost (the
-  // 5.29 m² square the gain counts) plus 2 m: 7.29 m. The west end, ranked
-  // then, is not sure to be the best, so it settles farther before it plans.
-  MapBuilder b{200, 100};
-  b.Wall(0, 0, 199, 99).Fill(1, 1, 198, 98, grid::CellState::kUnknown);
-  b.Wall(1, 1, 9, 98).Fill(5, 44, 9, 56, grid::CellState::kUnknown).Free(10, 1, 155, 98);
+  // path distances to what a candidate can score above its path cost (3.60
+  // m², the disc that holds the cells the gain counts) plus 2 m: 5.60 m. The
+  // west end, ranked then, is not sure to be the best, so it settles farther
+  // before it plans.
+  MapBuilder b{165, 100};
+  b.Wall(0, 0, 164, 99).Fill(1, 1, 163, 98, grid::CellState::kUnknown);
+  b.Wall(1, 1, 9, 98).Fill(5, 44, 9, 56, grid::CellState::kUnknown).Free(10, 1, 121, 98);
   const std::vector<Eigen::Vector2d> frontier = b.FrontierPoints();
-  const Eigen::Vector2d robot = b.At(80, 50);
+  const Eigen::Vector2d robot = b.At(63, 50);
   GoalPolicyOptions policy;
   policy.navigation.hysteresis_gain = 1.0;
   const auto first_goal = [&](const GoalPolicyOptions& p) {

@@ -89,10 +89,17 @@ double UnknownAreaVisible(const PlanningMap& map, const Eigen::Vector2d& p, doub
 double MaxInfoGainM2(double resolution_m, const NavigationPointOptions& options) {
   // Both UnknownAreaWithin and UnknownAreaVisible count cells of the square
   // of 2 r + 1 cells around the point's cell, r = ceil(radius / res) + 1.
-  const double radius_m =
-      options.info_visible_range_m > 0.0 ? options.info_visible_range_m : options.info_radius_m;
+  const bool visible = options.info_visible_range_m > 0.0;
+  const double radius_m = visible ? options.info_visible_range_m : options.info_radius_m;
   const double side = 2.0 * (std::ceil(radius_m / resolution_m) + 1.0) + 1.0;
-  return side * side * resolution_m * resolution_m;
+  const double square_m2 = side * side * resolution_m * resolution_m;
+  // And the cells counted, disjoint squares, lie inside a disc: those whose
+  // centres lie within the radius inside the radius plus half a cell
+  // diagonal; those holding a ray's point within range inside the range
+  // plus a diagonal. The tighter the bound, the less of the path distance
+  // field the goal manager settles (ScoreAbovePathCost).
+  const double reach_m = radius_m + (visible ? std::sqrt(2.0) : std::sqrt(0.5)) * resolution_m;
+  return std::min(square_m2, std::numbers::pi * reach_m * reach_m);
 }
 
 double InfoGain(const PlanningMap& map, const Eigen::Vector2d& p,

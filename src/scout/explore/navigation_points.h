@@ -62,7 +62,7 @@ double InfoGain(const PlanningMap& map, const Eigen::Vector2d& p,
 // The unknown area (m²) seen from 'p' within 'range_m' (see
 // NavigationPointOptions::info_visible_range_m).
 // An upper bound of InfoGain on a map of this resolution: the area of the
-// square of cells it scans.
+// square of cells it scans, or of the disc that holds the cells it counts.
 double MaxInfoGainM2(double resolution_m, const NavigationPointOptions& options);
 double UnknownAreaVisible(const PlanningMap& map, const Eigen::Vector2d& p, double range_m,
                           bool outside_map_is_unknown);
