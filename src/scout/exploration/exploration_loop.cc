@@ -489,8 +489,14 @@ ExplorationResult ExplorationLoop::Run(const ProgressCallback& progress, double 
         }
       }
       result_.timings.goals_s += watch.ElapsedUs() * 1e-6;
-      if (goals_.counters().goals_issued > issued_before && status.goal && status.target) {
-        RecordIssuedGoal(*status.goal, *status.target, status.path);
+      if (goals_.counters().goals_issued > issued_before) {
+        // A goal ended in the update that issued it (the robot already stood
+        // at its stand-off point) is still recorded, at the goal itself.
+        const explore::GoalRecord& issued = goals_.goal_log().back();
+        const bool current = status.goal && status.target;
+        RecordIssuedGoal(current ? *status.goal : issued.goal,
+                         current ? *status.target : issued.goal,
+                         current ? status.path : std::vector<Eigen::Vector2d>{});
         goal_log_index_.push_back(goals_.goal_log().size() - 1);
       }
     }
