@@ -1,6 +1,7 @@
 #include "scout/report/html_report.h"
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 
 #include "scout/report/strategy_stats.h"
@@ -70,6 +71,47 @@ std::string RenderRunReport(const RunData& run, const std::vector<Figure>& figur
                       FormatNumber("%.2f", p.info_gain_m2), FormatNumber("%.2f", p.revenue)});
     }
     body << HtmlTable({"rank", "x (m)", "y (m)", "path (m)", "unknown area (m²)", "revenue"}, rows);
+  }
+  if (!run.goals.empty()) {
+    // How the goals ended, then the ones a user looks into: those the robot
+    // neither reached nor saw on the way.
+    std::vector<std::pair<std::string, int>> counts;
+    for (const GoalRow& g : run.goals) {
+      auto it = std::find_if(counts.begin(), counts.end(),
+                             [&](const auto& c) { return c.first == g.outcome; });
+      if (it == counts.end()) {
+        counts.push_back({g.outcome, 0});
+        it = counts.end() - 1;
+      }
+      ++it->second;
+    }
+    std::vector<std::vector<std::string>> count_rows;
+    for (const auto& [outcome, n] : counts) count_rows.push_back({outcome, std::to_string(n)});
+    constexpr size_t kShown = 20;
+    std::vector<std::vector<std::string>> rows;
+    size_t others = 0;
+    for (const GoalRow& g : run.goals) {
+      if (g.outcome == "reached" || g.outcome == "seen") continue;
+      if (++others > kShown) continue;
+      rows.push_back({FormatNumber("%.2f", g.issued_s), FormatNumber("%.2f", g.goal_x_m),
+                      FormatNumber("%.2f", g.goal_y_m),
+                      std::isfinite(g.score) ? FormatNumber("%.2f", g.score) : "–",
+                      FormatNumber("%.2f", g.path_m), g.outcome,
+                      g.reachable_in_truth ? "yes" : "no"});
+    }
+    body << "<h2 id=\"goals\">Goals</h2>\n<p>" << run.goals.size()
+         << " goals issued, by how they ended (goals.csv).</p>\n"
+         << HtmlTable({"outcome", "goals"}, count_rows);
+    if (!rows.empty()) {
+      body << "<p>Goals neither reached nor seen on the way"
+           << (others > kShown
+                   ? ", the first " + std::to_string(kShown) + " of " + std::to_string(others)
+                   : "")
+           << " (true-world frame):</p>\n"
+           << HtmlTable({"issued (s)", "x (m)", "y (m)", "score", "path (m)", "outcome",
+                         "reachable in truth"},
+                        rows);
+    }
   }
   if (!figures.empty()) {
     body << "<h2 id=\"figures\">Figures</h2>\n";

@@ -130,6 +130,51 @@ TEST(HtmlReport, ReplayRunListsTheBestNavigationPoints) {
   }
 }
 
+// An exploration's goals.csv: how the goals ended, and the ones neither
+// reached nor seen on the way.
+TEST(HtmlReport, ExploreRunCountsItsGoalsByOutcome) {
+  const std::filesystem::path dir = testing::WriteExploreRun("goals", 1.0);
+  const std::string header =
+      "issued_s,robot_x,robot_y,goal_x,goal_y,target_x,target_y,score,path_m,ended_s,outcome,"
+      "reachable_in_truth\n";
+  WriteTextFileAtomically(dir / "goals.csv",
+                          header +
+                              "1,0,0,2,0,1.8,0,-1.500,2.1,3.000,seen,1\n"
+                              "3.05,1,0,5,1,4.8,1,-3.250,4.2,9.000,reached,1\n"
+                              "9.05,4.8,1,7.25,-3.5,7.2,-3.3,-6.125,6.6,20.000,failed,0\n"
+                              "20.05,4,0,1,1,1.2,1,,3.3,,open,1\n");
+  const std::string html = FindFile(BuildRunReport(dir), "report.html")->content;
+  ExpectSelfContained(html);
+  EXPECT_NE(html.find("4 goals issued"), std::string::npos) << html;
+  EXPECT_NE(html.find("<td>failed</td><td class=\"num\">1</td>"), std::string::npos) << html;
+  // Only the failed and the open goal are listed, the failed one as the true
+  // world could not be reached there.
+  EXPECT_NE(html.find("<td class=\"num\">7.25</td><td class=\"num\">-3.50</td>"),
+            std::string::npos);
+  EXPECT_NE(html.find("<td>failed</td><td>no</td>"), std::string::npos) << html;
+  EXPECT_NE(html.find("<td>open</td><td>yes</td>"), std::string::npos) << html;
+  EXPECT_EQ(html.find("<td class=\"num\">5.00</td><td class=\"num\">1.00</td>"), std::string::npos);
+  // Bad rows name the file, the line and what was expected.
+  const auto expect_error = [&](const std::string& row, const std::string& message) {
+    WriteTextFileAtomically(dir / "goals.csv",
+                            header + "1,0,0,2,0,1.8,0,-1.5,2.1,3,seen,1\n" + row);
+    try {
+      BuildRunReport(dir);
+      ADD_FAILURE() << "no error for " << row;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("goals.csv:3: " + message), std::string::npos)
+          << e.what();
+    }
+  };
+  expect_error("0.5,0,0,2,0,1.8,0,-1,2,3,seen,1\n", "issued_s '0.5' falls below");
+  expect_error("2,0,0,2,0,1.8,0,-1,2,3,lost,1\n", "outcome 'lost', expected one of");
+  expect_error("2,0,0,2,0,1.8,0,-1,2,,seen,1\n", "ended_s '' for outcome 'seen'");
+  expect_error("2,0,0,2,0,1.8,0,-1,2,3,open,1\n", "ended_s '3' for outcome 'open'");
+  expect_error("2,0,0,2,0,1.8,0,-1,2,1.5,seen,1\n", "ended_s '1.5' before issued_s");
+  expect_error("2,0,0,2,0,1.8,0,-1,2,3,seen,yes\n", "reachable_in_truth 'yes', expected 0 or 1");
+  expect_error("2,0,0,2,0,1.8,0,x,2,3,seen,1\n", "column 'score' is 'x'");
+}
+
 TEST(Compare, TwoRunsSideBySide) {
   const std::filesystem::path a = testing::WriteFrontierRun("eps_a");
   const std::filesystem::path b = testing::WriteFrontierRun("eps_b");

@@ -261,6 +261,58 @@ std::vector<NavigationPointRow> ReadNavigationPointsCsv(const std::filesystem::p
   return rows;
 }
 
+std::vector<GoalRow> ReadGoalsCsv(const std::filesystem::path& path) {
+  CsvReader csv(path, {"issued_s", "robot_x", "robot_y", "goal_x", "goal_y", "score", "path_m",
+                       "ended_s", "outcome", "reachable_in_truth"});
+  const int issued = csv.Column("issued_s"), rx = csv.Column("robot_x"), ry = csv.Column("robot_y"),
+            gx = csv.Column("goal_x"), gy = csv.Column("goal_y"), score = csv.Column("score"),
+            path_m = csv.Column("path_m"), ended = csv.Column("ended_s"),
+            outcome = csv.Column("outcome"), reachable = csv.Column("reachable_in_truth");
+  static const std::vector<std::string_view> kOutcomes = {"open",    "reached",     "seen",
+                                                          "failed",  "unreachable", "superseded",
+                                                          "dropped", "stuck",       "stopped"};
+  std::vector<GoalRow> rows;
+  while (csv.Next()) {
+    GoalRow r;
+    r.issued_s = csv.Number(issued);
+    if (!rows.empty() && r.issued_s < rows.back().issued_s) {
+      throw InputError(csv.Where() + ": issued_s '" + std::string(csv.Text(issued)) +
+                       "' falls below the row before's; expected goals in order of issue");
+    }
+    r.robot_x_m = csv.Number(rx);
+    r.robot_y_m = csv.Number(ry);
+    r.goal_x_m = csv.Number(gx);
+    r.goal_y_m = csv.Number(gy);
+    r.score = csv.Text(score).empty() ? std::nan("") : csv.Number(score);
+    r.path_m = csv.Number(path_m);
+    r.outcome = std::string(csv.Text(outcome));
+    if (std::find(kOutcomes.begin(), kOutcomes.end(), r.outcome) == kOutcomes.end()) {
+      throw InputError(csv.Where() + ": outcome '" + r.outcome +
+                       "', expected one of open, reached, seen, failed, unreachable, superseded, "
+                       "dropped, stuck, stopped");
+    }
+    const bool open = r.outcome == "open";
+    if (open != csv.Text(ended).empty()) {
+      throw InputError(csv.Where() + ": ended_s '" + std::string(csv.Text(ended)) +
+                       "' for outcome '" + r.outcome +
+                       "'; expected it empty exactly for an open goal");
+    }
+    r.ended_s = open ? std::nan("") : csv.Number(ended);
+    if (!open && r.ended_s < r.issued_s) {
+      throw InputError(csv.Where() + ": ended_s '" + std::string(csv.Text(ended)) +
+                       "' before issued_s; expected a goal to end after it was issued");
+    }
+    const std::string_view flag = csv.Text(reachable);
+    if (flag != "0" && flag != "1") {
+      throw InputError(csv.Where() + ": reachable_in_truth '" + std::string(flag) +
+                       "', expected 0 or 1");
+    }
+    r.reachable_in_truth = flag == "1";
+    rows.push_back(r);
+  }
+  return rows;
+}
+
 RunData ReadRun(const std::filesystem::path& dir, const std::string& name) {
   if (!std::filesystem::is_directory(dir)) {
     throw InputError("'" + dir.string() + "' is not a directory");
@@ -282,6 +334,7 @@ RunData ReadRun(const std::filesystem::path& dir, const std::string& name) {
   if (std::filesystem::exists(dir / "navigation_points.csv")) {
     run.navigation_points = ReadNavigationPointsCsv(dir / "navigation_points.csv");
   }
+  if (std::filesystem::exists(dir / "goals.csv")) run.goals = ReadGoalsCsv(dir / "goals.csv");
   for (const auto& entry : std::filesystem::directory_iterator(dir)) {
     if (entry.is_regular_file() && entry.path().extension() == ".png") {
       run.pictures.push_back(entry.path());

@@ -40,6 +40,18 @@ struct NavigationPointRow {
   double revenue = 0.0;
 };
 
+// One row of goals.csv (exploration runs): a goal the robot was sent to.
+struct GoalRow {
+  double issued_s = 0.0;
+  double robot_x_m = 0.0, robot_y_m = 0.0;
+  double goal_x_m = 0.0, goal_y_m = 0.0;
+  double score = 0.0;  // NaN when the file has none
+  double path_m = 0.0;
+  double ended_s = 0.0;  // NaN while open
+  std::string outcome;   // reached, seen, failed, ..., open
+  bool reachable_in_truth = true;
+};
+
 // What a Scout output directory holds, read back from its files. Each part is
 // empty when its file is absent.
 struct RunData {
@@ -49,6 +61,7 @@ struct RunData {
   std::vector<FrontierRound> rounds;
   std::vector<CoverageSample> coverage;
   std::vector<NavigationPointRow> navigation_points;
+  std::vector<GoalRow> goals;
   std::vector<std::filesystem::path> pictures;  // *.png, frontiers.png and map.png first
 };
 
@@ -62,6 +75,11 @@ std::vector<CoverageSample> ReadCoverageCsv(const std::filesystem::path& path);
 
 // Reads navigation_points.csv. Throws like ReadFrontierCsv.
 std::vector<NavigationPointRow> ReadNavigationPointsCsv(const std::filesystem::path& path);
+
+// Reads goals.csv. Throws like ReadFrontierCsv, also on an unknown outcome,
+// an issue time that falls, an end before the issue, or an end given for an
+// open goal (or none for an ended one).
+std::vector<GoalRow> ReadGoalsCsv(const std::filesystem::path& path);
 
 // Returns the first sample whose coverage reached 'fraction' (0-1), or null.
 const CoverageSample* FirstReaching(const std::vector<CoverageSample>& coverage, double fraction);
