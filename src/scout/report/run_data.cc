@@ -268,9 +268,14 @@ std::vector<GoalRow> ReadGoalsCsv(const std::filesystem::path& path) {
             gx = csv.Column("goal_x"), gy = csv.Column("goal_y"), score = csv.Column("score"),
             path_m = csv.Column("path_m"), ended = csv.Column("ended_s"),
             outcome = csv.Column("outcome"), reachable = csv.Column("reachable_in_truth");
+  // The names explore::ToString(GoalOutcome) writes; this module reads only
+  // the files, never the module that wrote them.
   static const std::vector<std::string_view> kOutcomes = {"open",    "reached",     "seen",
                                                           "failed",  "unreachable", "superseded",
                                                           "dropped", "stuck",       "stopped"};
+  std::string expected;
+  for (const std::string_view o : kOutcomes)
+    expected += (expected.empty() ? "" : ", ") + std::string(o);
   std::vector<GoalRow> rows;
   while (csv.Next()) {
     GoalRow r;
@@ -287,9 +292,7 @@ std::vector<GoalRow> ReadGoalsCsv(const std::filesystem::path& path) {
     r.path_m = csv.Number(path_m);
     r.outcome = std::string(csv.Text(outcome));
     if (std::find(kOutcomes.begin(), kOutcomes.end(), r.outcome) == kOutcomes.end()) {
-      throw InputError(csv.Where() + ": outcome '" + r.outcome +
-                       "', expected one of open, reached, seen, failed, unreachable, superseded, "
-                       "dropped, stuck, stopped");
+      throw InputError(csv.Where() + ": outcome '" + r.outcome + "', expected one of " + expected);
     }
     const bool open = r.outcome == "open";
     if (open != csv.Text(ended).empty()) {
