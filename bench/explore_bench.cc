@@ -14,6 +14,8 @@
 #include "scout/exploration/exploration_options.h"
 #include "scout/exploration/ground_truth.h"
 #include "scout/exploration/test_worlds.h"
+#include "scout/explore/mean_shift.h"
+#include "scout/explore/navigation_points.h"
 #include "scout/explore/path_distance_field.h"
 #include "scout/explore/planning_map.h"
 #include "scout/sim/make_world.h"
@@ -120,6 +122,107 @@ void BM_MappedFreeM2(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_MappedFreeM2)->ArgName("museum")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
+// A museum half explored: from points every 4 m along rows 6 m apart over
+// the west half, rays every half degree to 8 m (the lidar's spacing and
+// range) mark the cells they cross free and the wall they end on occupied;
+// the rest stays unknown. As in a run's map, far rays leave unknown cells
+// between them, so the frontier (free cells next to unknown ones) has tens of
+// thousands of points, most of them in pieces too small to enter: what goal
+// selection clusters and ranks at every re-plan.
+struct HalfExploredMuseum {
+  HalfExploredMuseum() {
+    const scout::grid::OccupancyMap& truth = TheMuseum().world.map;
+    const scout::grid::MapLimits& l = truth.limits;
+    map.limits = l;
+    map.cells.assign(l.num_cells(), scout::grid::CellState::kUnknown);
+    const scout::geometry::Box2d box = l.Bounds();
+    const double mid_x = 0.5 * (box.min.x() + box.max.x());
+    const double step_m = 0.5 * l.resolution();
+    for (double y = box.min.y() + 3.0; y < box.max.y(); y += 6.0) {
+      for (double x = box.min.x() + 3.0; x < mid_x; x += 4.0) {
+        const Eigen::Vector2d eye(x, y);
+        if (truth.at(l.CellContaining(eye)) != scout::grid::CellState::kFree) continue;
+        for (int k = 0; k < 720; ++k) {
+          const double a = k * M_PI / 360.0;
+          const Eigen::Vector2d dir(std::cos(a), std::sin(a));
+          for (double s = 0.0; s <= 8.0; s += step_m) {
+            const scout::grid::CellIndex c = l.CellContaining(eye + s * dir);
+            if (!l.Contains(c)) break;
+            if (truth.at(c) == scout::grid::CellState::kOccupied) {
+              map.set(c, scout::grid::CellState::kOccupied);
+              break;
+            }
+            map.set(c, scout::grid::CellState::kFree);
+          }
+        }
+      }
+    }
+    for (int y = 1; y + 1 < l.height(); ++y) {
+      for (int x = 1; x + 1 < l.width(); ++x) {
+        if (map.at({x, y}) != scout::grid::CellState::kFree) continue;
+        if (map.at({x + 1, y}) == scout::grid::CellState::kUnknown ||
+            map.at({x - 1, y}) == scout::grid::CellState::kUnknown ||
+            map.at({x, y + 1}) == scout::grid::CellState::kUnknown ||
+            map.at({x, y - 1}) == scout::grid::CellState::kUnknown) {
+          frontier.push_back(l.CellCenter({x, y}));
+        }
+      }
+    }
+    // The robot stands at the first viewpoint.
+    robot = Eigen::Vector2d(box.min.x() + 3.0, box.min.y() + 3.0);
+    for (double y = box.min.y() + 3.0; y < box.max.y(); y += 6.0) {
+      const Eigen::Vector2d p(box.min.x() + 3.0, y);
+      if (truth.at(l.CellContaining(p)) == scout::grid::CellState::kFree) {
+        robot = p;
+        break;
+      }
+    }
+  }
+  scout::grid::OccupancyMap map;
+  std::vector<Eigen::Vector2d> frontier;
+  Eigen::Vector2d robot;
+};
+
+const HalfExploredMuseum& TheHalfExploredMuseum() {
+  static const HalfExploredMuseum museum;
+  return museum;
+}
+
+void BM_MeanShiftFrontier(benchmark::State& state) {
+  const HalfExploredMuseum& m = TheHalfExploredMuseum();
+  const scout::explore::MeanShiftOptions options;
+  size_t clusters = 0;
+  for (auto _ : state) {
+    const scout::explore::MeanShiftClusters c = scout::explore::MeanShift(m.frontier, options);
+    clusters = c.centres.size();
+    benchmark::DoNotOptimize(c.label.data());
+  }
+  state.counters["frontier_points"] = static_cast<double>(m.frontier.size());
+  state.counters["clusters"] = static_cast<double>(clusters);
+}
+BENCHMARK(BM_MeanShiftFrontier)->Unit(benchmark::kMillisecond);
+
+// Ranking the navigation points of that frontier on a complete path distance
+// field (each point's nearest reached cell, info gain, revenue).
+void BM_NavigationPointsFrontier(benchmark::State& state) {
+  const HalfExploredMuseum& m = TheHalfExploredMuseum();
+  const ExplorationOptions options;
+  const PlanningMap map(m.map, PlanningTraversability(options));
+  const PathDistanceField field(map, m.robot);
+  const scout::explore::NavigationPointOptions nav;
+  const scout::explore::FrontierPartition partition =
+      scout::explore::PartitionFrontier(map, m.frontier, nav);
+  size_t points = 0;
+  for (auto _ : state) {
+    const auto ranked =
+        scout::explore::ComputeNavigationPoints(map, field, partition, m.robot, std::nullopt, nav);
+    points = ranked.size();
+    benchmark::DoNotOptimize(ranked.data());
+  }
+  state.counters["navigation_points"] = static_cast<double>(points);
+}
+BENCHMARK(BM_NavigationPointsFrontier)->Unit(benchmark::kMillisecond);
 
 // The whole closed loop (simulator, SLAM, frontiers, goals) on the 9 m x 6 m
 // building of exploration_loop_test, which asserts what the run achieves; this
