@@ -203,12 +203,30 @@ GoalManager::Reach GoalManager::ReachFrom(const Eigen::Vector2d& robot,
                                           double settle_m) {
   const double snap = map_->options().goal_snap_radius_m;
   // Settles the field until it reaches a frontier point or every cell, from
-  // 'settle_m' on, doubling (the nearest frontier is usually near).
+  // 'settle_m' on, doubling (the nearest frontier is usually near). A point
+  // is reached when a cell within the snap radius is (NearestReached); the
+  // first look gathers those cells, so that the looks after it, when none
+  // was reached, read a list instead of walking tens of thousands of discs
+  // again.
+  const grid::MapLimits& limits = map_->limits();
   const auto reaches_frontier = [&](PathDistanceField& field) {
+    std::vector<int64_t> cells;
+    bool gathered = false;
     for (double d = settle_m;; d = std::max(2.0 * d, kFirstSettle_m)) {
       field.SettleUpTo(d);
-      for (const Eigen::Vector2d& p : frontier) {
-        if (field.NearestReached(p, snap)) return true;
+      if (!gathered) {
+        bool reached = false;
+        for (const Eigen::Vector2d& p : frontier) {
+          ForEachCellWithin(limits, p, snap, [&](const grid::CellIndex& c) {
+            cells.push_back(limits.FlatIndex(c));
+            reached = reached || std::isfinite(field.at(cells.back()));
+          });
+          if (reached) return true;
+        }
+        gathered = true;
+      } else if (std::any_of(cells.begin(), cells.end(),
+                             [&](int64_t flat) { return std::isfinite(field.at(flat)); })) {
+        return true;
       }
       if (field.complete()) return false;
     }

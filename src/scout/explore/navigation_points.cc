@@ -207,6 +207,13 @@ std::vector<NavigationPoint> ComputeNavigationPoints(
   st.clusters = static_cast<int>(partition.points.size());
   st.components = partition.num_components;
   const double snap = map.options().goal_snap_radius_m;
+  if (partition.reached_on != distances.id()) {
+    partition.reached_on = distances.id();
+    partition.reached.clear();
+    for (const std::vector<Eigen::Vector2d>& points : partition.points) {
+      partition.reached.emplace_back(points.size());
+    }
+  }
   for (size_t k = 0; k < partition.points.size(); ++k) {
     const std::vector<Eigen::Vector2d>& points = partition.points[k];
     const std::vector<int>& component = partition.component[k];
@@ -225,7 +232,8 @@ std::vector<NavigationPoint> ComputeNavigationPoints(
     for (size_t i = 0; i < points.size(); ++i) {
       Best& b = best[component[i]];
       ++b.size;
-      const auto reached = distances.NearestReached(points[i], snap);
+      std::optional<PathDistanceField::Reached>& reached = partition.reached[k][i];
+      if (!reached) reached = distances.NearestReached(points[i], snap);
       if (!reached) continue;
       const double straight = (points[i] - robot).norm();
       if (reached->distance_m < b.path ||

@@ -2,6 +2,7 @@
 #define SCOUT_EXPLORE_NAVIGATION_POINTS_H_
 
 #include <Eigen/Core>
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -111,6 +112,13 @@ struct FrontierPartition {
   std::vector<std::vector<Eigen::Vector2d>> points;  // per cluster
   std::vector<std::vector<int>> component;           // per cluster, per point
   int num_components = 0;
+  // Each point's nearest reached cell as ComputeNavigationPoints found it on
+  // the path distance field with id reached_on. A goal selection ranks one
+  // partition several times on one field, settled farther each time; a cell
+  // settled later lies farther than every cell settled before, so a point
+  // once reached keeps its cell, and only the others are looked at again.
+  mutable uint64_t reached_on = 0;
+  mutable std::vector<std::vector<std::optional<PathDistanceField::Reached>>> reached;
 };
 FrontierPartition PartitionFrontier(const PlanningMap& map,
                                     const std::vector<Eigen::Vector2d>& frontier,

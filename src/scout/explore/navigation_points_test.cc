@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <any>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <set>
 
@@ -191,6 +192,53 @@ TEST(NavigationPointsTest, ConnectivityLeaksNeitherThroughDiagonalWalls) {
   const auto label = SplitByConnectivity(map, {b.At(3, 10), b.At(10, 3), b.At(4, 12)}, 1.0);
   EXPECT_NE(label[0], label[1]);
   EXPECT_EQ(label[0], label[2]);
+}
+
+// A goal selection ranks one partition several times on one path distance
+// field, settled farther each time, and keeps the cells it found reached
+// (FrontierPartition::reached): every ranking must equal one on a partition
+// that has seen no field.
+RC_GTEST_PROP(NavigationPointsProperty, RankingAgainOnAFieldSettledFartherEqualsAFreshRanking, ()) {
+  const int w = *rc::gen::inRange(8, 40), h = *rc::gen::inRange(8, 40);
+  MapBuilder b(w, h, 0.05, grid::CellState::kUnknown);
+  b.Free(1, 1, w - 2, h - 2);
+  const int walls = *rc::gen::inRange(0, 6);
+  for (int k = 0; k < walls; ++k) {
+    const int x = *rc::gen::inRange(0, w), y = *rc::gen::inRange(0, h);
+    const int len = *rc::gen::inRange(1, 30);
+    if (*rc::gen::arbitrary<bool>()) {
+      b.Wall(x, y, x + len, y);
+    } else {
+      b.Wall(x, y, x, y + len);
+    }
+  }
+  const std::vector<Eigen::Vector2d> frontier = b.FrontierPoints();
+  RC_PRE(!frontier.empty());
+  TraversabilityOptions trav;
+  trav.robot_radius_m = 0.1;
+  trav.safety_margin_m = 0.05;
+  trav.narrow_margin_m = 0.02;
+  const PlanningMap map(b.map(), trav);
+  const Eigen::Vector2d robot = b.At(*rc::gen::inRange(1, w - 1), *rc::gen::inRange(1, h - 1));
+  NavigationPointOptions options;
+  options.mean_shift.bandwidth_m = 0.3;
+  const FrontierPartition kept = PartitionFrontier(map, frontier, options);
+  PathDistanceField field(map, StartRegion(map, robot), *rc::gen::inRange(0, 20) * 0.05);
+  for (const double settle_m : {0.3, 0.8, 1.5, std::numeric_limits<double>::infinity()}) {
+    field.SettleUpTo(settle_m);
+    const std::vector<NavigationPoint> again =
+        ComputeNavigationPoints(map, field, kept, robot, std::nullopt, options);
+    const std::vector<NavigationPoint> fresh = ComputeNavigationPoints(
+        map, field, PartitionFrontier(map, frontier, options), robot, std::nullopt, options);
+    RC_ASSERT(again.size() == fresh.size());
+    for (size_t i = 0; i < again.size(); ++i) {
+      RC_ASSERT(again[i].position == fresh[i].position);
+      RC_ASSERT(again[i].cost_m == fresh[i].cost_m);
+      RC_ASSERT(again[i].reached_cell == fresh[i].reached_cell);
+      RC_ASSERT(again[i].revenue == fresh[i].revenue);
+      RC_ASSERT(again[i].component_size == fresh[i].component_size);
+    }
+  }
 }
 
 // The connectivity split labels points as an independent flood of each

@@ -1,19 +1,29 @@
 #include "scout/explore/path_distance_field.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <limits>
 #include <utility>
 
 namespace scout::explore {
+namespace {
+
+uint64_t NextId() {
+  static std::atomic<uint64_t> next{1};
+  return next++;
+}
+
+}  // namespace
 
 PathDistanceField::PathDistanceField(const PlanningMap& map, const Eigen::Vector2d& robot)
     : PathDistanceField(map, StartRegion(map, robot)) {}
 
 PathDistanceField::PathDistanceField(const PlanningMap& map, const StartRegion& start,
                                      double settle_m)
-    : limits_(map.limits()),
+    : id_(NextId()),
+      limits_(map.limits()),
       res_(static_cast<float>(limits_.resolution())),
       distance_cells_(static_cast<size_t>(padded_width()) * (limits_.height() + 2), kUnreachable) {
   float nearest = kUnreachable;

@@ -68,6 +68,9 @@ class PathDistanceField {
   }
   // The seed cell nearest the robot by path, if any.
   const std::optional<grid::CellIndex>& start() const { return start_; }
+  // Different for every field constructed (kept by a move), so that what was
+  // found on one field is not taken for another's (FrontierPartition).
+  uint64_t id() const { return id_; }
 
   // Returns the least distance over the cells within 'radius_m' of 'p' (the cell
   // containing 'p' always counts), and that cell; nothing when none is reached.
@@ -89,6 +92,7 @@ class PathDistanceField {
   // every k <= last_bucket (or to its end).
   void Run(int64_t last_bucket);
 
+  uint64_t id_;
   grid::MapLimits limits_;
   float res_;  // metres per cell
   std::optional<grid::CellIndex> start_;
