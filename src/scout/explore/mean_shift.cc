@@ -129,11 +129,11 @@ MeanShiftClusters MeanShift(const std::vector<Eigen::Vector2d>& points,
   // same points in the kernel give the same mean), and from there on their
   // shifts are the same: on the half-explored museum frontier of
   // scout_explore_bench (21,700 points) two thirds of the shifts repeated one
-  // another seed had made. A position from which a
-  // seed went on shifting is remembered with where that ended and after how
-  // many more shifts, and a later seed stepping onto it takes that end when
-  // its own shift budget would have lasted as long; so the modes and supports
-  // are exactly those of shifting every seed to the end.
+  // that another seed had made (fewer on a run's frontier: docs/EXPERIMENTS.md).
+  // A position from which a seed went on shifting is remembered with where
+  // that ended and after how many more shifts, and a later seed stepping onto
+  // it takes that end when its own shift budget would have lasted as long; so
+  // the modes and supports are exactly those of shifting every seed to the end.
   struct Mode {
     Eigen::Vector2d position;
     int support;
